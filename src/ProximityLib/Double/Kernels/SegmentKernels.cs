@@ -1,0 +1,219 @@
+using System;
+using System.Runtime.CompilerServices;
+
+namespace ProximityLib.Double
+{
+    internal static partial class Kernels
+    {
+        /// <summary>
+        /// Squared distance between segments [a0, a1] and [b0, b1] and the parameters (s, t) of a closest pair.
+        /// The objective is a convex quadratic on the unit square, so its minimum is the interior stationary point or
+        /// lies on one of the four square edges, each of which is a point–segment query (Eberly, "Robust Computation of
+        /// Distance Between Line Segments", the same case split). The interior point uses the Lagrange form
+        /// det = |d0 × d1|² instead of |d0|²|d1|² − (d0·d1)², which cancels to noise for nearly parallel segments.
+        /// When the pair is ill-conditioned every candidate is evaluated and the smallest kept, so no noisy parameter
+        /// can win unless it is honestly the closest.
+        /// </summary>
+        public static double SegmentSegmentCore(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, out double s, out double t)
+        {
+            var d0 = a1 - a0;
+            var d1 = b1 - b0;
+            var w = b0 - a0;
+            var n = Vector3D.Cross(d0, d1);
+            double nn = n.LengthSquared;
+            double best = double.PositiveInfinity;
+            s = 0; t = 0;
+            if (nn > 0)
+            {
+                double si = Vector3D.Dot(Vector3D.Cross(w, d1), n) / nn;
+                double ti = Vector3D.Dot(Vector3D.Cross(w, d0), n) / nn;
+                if (si >= 0 && si <= 1 && ti >= 0 && ti <= 1)
+                {
+                    best = (d0 * si - d1 * ti - w).LengthSquared;
+                    s = si; t = ti;
+                    // sin²θ ≥ 1e-4: the interior solve is well conditioned and, by convexity, the global minimum.
+                    if (nn >= 1e-4 * d0.LengthSquared * d1.LengthSquared) return best;
+                }
+            }
+
+            double r2 = PointSegmentResidual(a0, b0, b1, out double tc).LengthSquared;
+            if (r2 < best) { best = r2; s = 0; t = tc; }
+            r2 = PointSegmentResidual(a1, b0, b1, out tc).LengthSquared;
+            if (r2 < best) { best = r2; s = 1; t = tc; }
+            r2 = PointSegmentResidual(b0, a0, a1, out double sc).LengthSquared;
+            if (r2 < best) { best = r2; s = sc; t = 0; }
+            r2 = PointSegmentResidual(b1, a0, a1, out sc).LengthSquared;
+            if (r2 < best) { best = r2; s = sc; t = 1; }
+            return best;
+        }
+
+        public static DistanceResult3 SegmentSegment(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1)
+        {
+            double r2 = SegmentSegmentCore(a0, a1, b0, b1, out double s, out double t);
+            return new DistanceResult3(Math.Sqrt(r2), r2, SegmentPoint(a0, a1, s), SegmentPoint(b0, b1, t), s, t);
+        }
+
+        /// <summary>
+        /// Minimum over t ∈ [0, 1] of the squared distance from a + t·d to the box [lo, hi] (all box-local). The function is
+        /// convex and piecewise quadratic, with breakpoints where the segment crosses a slab plane; on each piece the set
+        /// of clamped axes is fixed, so the piece's minimum is its clamped stationary point. The best piece wins.
+        /// </summary>
+        public static double SegmentBoxLocal(Vector3D a, Vector3D d, Vector3D lo, Vector3D hi, out double t)
+        {
+            Span<double> ts = stackalloc double[8];
+            int n = 0;
+            ts[n++] = 0;
+            AddCrossings(a.X, d.X, lo.X, hi.X, ts, ref n);
+            AddCrossings(a.Y, d.Y, lo.Y, hi.Y, ts, ref n);
+            AddCrossings(a.Z, d.Z, lo.Z, hi.Z, ts, ref n);
+            ts[n++] = 1;
+            for (int i = 2; i < n - 1; i++)
+            {
+                double v = ts[i];
+                int j = i - 1;
+                while (j >= 1 && ts[j] > v) { ts[j + 1] = ts[j]; j--; }
+                ts[j + 1] = v;
+            }
+
+            double best = double.PositiveInfinity;
+            t = 0;
+            for (int k = 0; k + 1 < n; k++)
+            {
+                double t0 = ts[k], t1 = ts[k + 1], tm = 0.5 * (t0 + t1);
+                double num = 0, den = 0;
+                Accumulate(a.X, d.X, lo.X, hi.X, tm, ref num, ref den);
+                Accumulate(a.Y, d.Y, lo.Y, hi.Y, tm, ref num, ref den);
+                Accumulate(a.Z, d.Z, lo.Z, hi.Z, tm, ref num, ref den);
+                double tc = den > 0 ? Num.Clamp(num / den, t0, t1) : t0;
+                double g = Gap(a.X, d.X, lo.X, hi.X, tc) + Gap(a.Y, d.Y, lo.Y, hi.Y, tc) + Gap(a.Z, d.Z, lo.Z, hi.Z, tc);
+                if (g < best) { best = g; t = tc; }
+            }
+            return best;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void AddCrossings(double a, double d, double lo, double hi, Span<double> ts, ref int n)
+        {
+            if (d == 0) return;
+            double t = (lo - a) / d;
+            if (t > 0 && t < 1) ts[n++] = t;
+            if (hi != lo)
+            {
+                t = (hi - a) / d;
+                if (t > 0 && t < 1) ts[n++] = t;
+            }
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void Accumulate(double a, double d, double lo, double hi, double t, ref double num, ref double den)
+        {
+            double e = a + t * d;
+            double bound;
+            if (e < lo) bound = lo;
+            else if (e > hi) bound = hi;
+            else return;
+            num += d * (bound - a);
+            den += d * d;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Gap(double a, double d, double lo, double hi, double t)
+        {
+            double e = a + t * d;
+            double g = e < lo ? lo - e : (e > hi ? e - hi : 0);
+            return g * g;
+        }
+
+        /// <summary>Closest points of a segment and a box when they are apart (squared distance 0 when they meet).</summary>
+        public static double SegmentBoxSeparated(Vector3D a, Vector3D b, in Box box, out double t, out Vector3D onSegment, out Vector3D onBox)
+        {
+            var la = box.ToLocal(a - box.Origin);
+            var ld = box.ToLocal(b - a);
+            double g = SegmentBoxLocal(la, ld, box.Lo, box.Hi, out t);
+            var e = la + ld * t;
+            var c = new Vector3D(Num.Clamp(e.X, box.Lo.X, box.Hi.X), Num.Clamp(e.Y, box.Lo.Y, box.Hi.Y), Num.Clamp(e.Z, box.Lo.Z, box.Hi.Z));
+            onSegment = SegmentPoint(a, b, t);
+            onBox = box.Origin + box.ToWorldOffset(c);
+            return g;
+        }
+
+        /// <summary>
+        /// Segment against a solid box. Apart: the piecewise-quadratic minimum above. Meeting: the minimum translation
+        /// over the separating-axis candidates of the Minkowski sum (box normals and segment × box edges), each
+        /// evaluated on its own normalised direction so a noisy near-degenerate axis can only overestimate; the witness
+        /// points are the closest points of the just-touching configuration, moved back.
+        /// </summary>
+        public static DistanceResult3 SegmentBox(Vector3D a, Vector3D b, in Box box)
+        {
+            // The separating-axis verdict decides which side we are on: the squared gap alone would call a segment
+            // crossing a zero-thickness box "apart" by rounding.
+            if (!SegmentBoxOverlaps(a, b, box))
+            {
+                double g = SegmentBoxSeparated(a, b, box, out double t, out var onSegment, out var onBox);
+                return new DistanceResult3(Math.Sqrt(g), g, onSegment, onBox, t, 0);
+            }
+
+            var la = box.ToLocal(a - box.Origin);
+            var ld = box.ToLocal(b - a);
+            double depth = Math.Max(0, SegmentBoxPenetration(la, ld, box, out var pushLocal));
+            var push = box.ToWorldOffset(pushLocal);
+            SegmentBoxSeparated(a + push, b + push, box, out double tp, out _, out var touch);
+            return new DistanceResult3(-depth, 0, SegmentPoint(a, b, tp), depth > 0 ? touch : SegmentPoint(a, b, tp), tp, 0);
+        }
+
+        private static double SegmentBoxPenetration(Vector3D a, Vector3D d, in Box box, out Vector3D push)
+        {
+            var c = box.LocalCenter;
+            var h = box.Half;
+            double best = double.PositiveInfinity;
+            push = default;
+            TryPushAxis(Vector3D.UnitX, a, d, c, h, ref best, ref push);
+            TryPushAxis(Vector3D.UnitY, a, d, c, h, ref best, ref push);
+            TryPushAxis(new Vector3D(d.Y, -d.X, 0), a, d, c, h, ref best, ref push);
+            if (!box.Planar)
+            {
+                TryPushAxis(Vector3D.UnitZ, a, d, c, h, ref best, ref push);
+                TryPushAxis(new Vector3D(0, d.Z, -d.Y), a, d, c, h, ref best, ref push);
+                TryPushAxis(new Vector3D(-d.Z, 0, d.X), a, d, c, h, ref best, ref push);
+            }
+            return best;
+        }
+
+        private static void TryPushAxis(Vector3D axis, Vector3D a, Vector3D d, Vector3D c, Vector3D h, ref double best, ref Vector3D push)
+        {
+            double len2 = axis.LengthSquared;
+            if (!(len2 > 0) || double.IsInfinity(len2)) return;
+            var n = axis / Math.Sqrt(len2);
+            double pa = Vector3D.Dot(a - c, n), pb = pa + Vector3D.Dot(d, n);
+            double smin = Math.Min(pa, pb), smax = Math.Max(pa, pb);
+            double r = Vector3D.Dot(h, Vec.Abs(n));
+            double down = smax + r; // moving the segment by −n·down clears the box
+            double up = r - smin;   // moving it by +n·up clears the box
+            if (down < best) { best = down; push = -n * down; }
+            if (up < best) { best = up; push = n * up; }
+        }
+
+        /// <summary>Segment–box overlap by the separating-axis test in the box frame, no square roots, early outs.</summary>
+        public static bool SegmentBoxOverlaps(Vector3D a, Vector3D b, in Box box)
+        {
+            var c = box.LocalCenter;
+            var h = box.Half;
+            var m = box.ToLocal(a - box.Origin) - c;
+            var d = box.ToLocal(b - a);
+            if (Separates(Vector3D.UnitX, m, d, h)) return false;
+            if (Separates(Vector3D.UnitY, m, d, h)) return false;
+            if (!box.Planar && Separates(Vector3D.UnitZ, m, d, h)) return false;
+            if (Separates(new Vector3D(d.Y, -d.X, 0), m, d, h)) return false;
+            if (box.Planar) return true;
+            return !Separates(new Vector3D(0, d.Z, -d.Y), m, d, h) && !Separates(new Vector3D(-d.Z, 0, d.X), m, d, h);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool Separates(Vector3D axis, Vector3D m, Vector3D d, Vector3D h)
+        {
+            double pa = Vector3D.Dot(m, axis), pb = pa + Vector3D.Dot(d, axis);
+            double r = Vector3D.Dot(h, Vec.Abs(axis));
+            return Math.Min(pa, pb) > r || Math.Max(pa, pb) < -r;
+        }
+    }
+}
