@@ -23,6 +23,7 @@ namespace ProximityLib.Double
         /// <summary>The paper's form: minimum corner plus length (X), height (Y) and width (Z), all non-negative.</summary>
         public static Aabb3 FromOrigin(Vector3D origin, double length, double height, double width)
         {
+            Num.Finite(origin, nameof(origin));
             Num.NonNegative(length, nameof(length));
             Num.NonNegative(height, nameof(height));
             Num.NonNegative(width, nameof(width));
@@ -66,6 +67,7 @@ namespace ProximityLib.Double
         /// <summary>The paper's form: minimum corner plus length (X) and height (Y), both non-negative.</summary>
         public static Aabb2 FromOrigin(Vector2D origin, double length, double height)
         {
+            Num.Finite(origin, nameof(origin));
             Num.NonNegative(length, nameof(length));
             Num.NonNegative(height, nameof(height));
             return new Aabb2(origin, origin + new Vector2D(length, height));

@@ -18,11 +18,11 @@ namespace ProximityLib.Double
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and a segment (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Vector3D a, Segment3 b) => Kernels.PointSegmentResidual(a, b.Start, b.End, out _).LengthSquared == 0;
+        public static bool Overlaps(Vector3D a, Segment3 b) => Kernels.PointSegmentResidual(a, b.Start, b.End, out _) == default;
         /// <summary>Whether a segment and a point (3D) touch or overlap.</summary>
         public static bool Overlaps(Segment3 a, Vector3D b) => Overlaps(b, a);
         /// <summary>Whether a point and a segment (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Vector2D a, Segment2 b) => Kernels.PointSegmentResidual(a.To3(), b.Start.To3(), b.End.To3(), out _).LengthSquared == 0;
+        public static bool Overlaps(Vector2D a, Segment2 b) => Kernels.PointSegmentResidual(a.To3(), b.Start.To3(), b.End.To3(), out _) == default;
         /// <summary>Whether a segment and a point (2D) touch or overlap.</summary>
         public static bool Overlaps(Segment2 a, Vector2D b) => Overlaps(b, a);
     }

@@ -1,7 +1,7 @@
 using ProximityLib.Double;
 using Dbl = ProximityLib.Double;
 
-namespace ProximityLib.Tests.Support
+namespace ProximityTests.Support
 {
     /// <summary>A query answer in one shape for both dimensions and precisions (2D results get z = 0).</summary>
     public readonly struct Res

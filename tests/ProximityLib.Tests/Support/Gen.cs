@@ -1,9 +1,10 @@
 using System;
 using System.Collections.Generic;
+using System.Linq;
 using NUnit.Framework;
 using ProximityLib.Double;
 
-namespace ProximityLib.Tests.Support
+namespace ProximityTests.Support
 {
     /// <summary>Seeded random shapes whose inputs are all floats (so both APIs see the same shape).</summary>
     public static class Gen
@@ -17,6 +18,12 @@ namespace ProximityLib.Tests.Support
                 for (int i = 0; i < Kinds.Length; i++)
                     for (int j = i; j < Kinds.Length; j++)
                         yield return new TestCaseData(dim, Kinds[i], Kinds[j]).SetArgDisplayNames($"{dim}D", Kinds[i].ToString(), Kinds[j].ToString());
+        }
+
+        public static IEnumerable<TestCaseData> PairsWithoutAabb()
+        {
+            foreach (var pair in Pairs())
+                if (!pair.Arguments.Contains(Kind.Aabb)) yield return pair;
         }
 
         public static int Seed(int dim, Kind a, Kind b) => dim * 1000 + (int)a * 10 + (int)b;
@@ -61,7 +68,8 @@ namespace ProximityLib.Tests.Support
             if (dim == 2)
             {
                 double angle = rng.NextDouble() * 2 * Math.PI;
-                return new[] { new Vector3D((float)Math.Cos(angle), (float)Math.Sin(angle), 0), Vector3D.UnitY, Vector3D.UnitZ };
+                double c = Math.Cos(angle), s = Math.Sin(angle);
+                return new[] { new Vector3D(c, s, 0), new Vector3D(-s, c, 0), Vector3D.UnitZ };
             }
             var q = new System.Numerics.Quaternion((float)Normal(rng), (float)Normal(rng), (float)Normal(rng), (float)Normal(rng));
             var o = ProximityLib.Double.Obb3.FromQuaternion(default, q.X, q.Y, q.Z, q.W, default);

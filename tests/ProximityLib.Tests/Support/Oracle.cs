@@ -3,7 +3,7 @@ using System.Collections.Generic;
 using System.Linq;
 using ProximityLib.Double;
 
-namespace ProximityLib.Tests.Support
+namespace ProximityTests.Support
 {
     /// <summary>
     /// Signed distance of two convex shapes by duality, independent of the library's case analysis:

@@ -3,7 +3,7 @@ using System.Numerics;
 using ProximityLib.Double;
 using Dbl = ProximityLib.Double;
 
-namespace ProximityLib.Tests.Support
+namespace ProximityTests.Support
 {
     public enum Kind { Point, Segment, Sphere, Aabb, Obb }
 
