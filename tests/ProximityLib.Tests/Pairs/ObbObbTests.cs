@@ -21,6 +21,19 @@ namespace ProximityTests.Pairs
         }
 
         [Test]
+        public void TwoDimensionalCornerToFace()
+        {
+            // A square turned 45° whose left corner is 0.5 right of an axis-aligned square's right face.
+            var a = new ProximityLib.Double.Obb2(V(0, 0), 0.0, V(1, 1));
+            var b = new ProximityLib.Double.Obb2(V(1.5 + Math.Sqrt(2), 0.25), Math.PI / 4, V(1, 1));
+            var r = ClosestDistance.Between(a, b);
+            Result(r, 0.5, V(1, 0.25), V(1.5, 0.25), 1e-15);
+            Assert.That(ProximityQuery.Overlaps(a, b), Is.False);
+            Assert.That(ClosestDistance.Between(a, new ProximityLib.Double.Obb2(V(0.75 + Math.Sqrt(2), 0.25), Math.PI / 4, V(1, 1))).Distance,
+                Is.EqualTo(-0.25).Within(1e-15));
+        }
+
+        [Test]
         public void VertexIntoFace()
         {
             var r = ClosestDistance.Between(Turned(0, 0), Turned(2, Math.PI / 4));

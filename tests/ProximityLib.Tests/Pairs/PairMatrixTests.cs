@@ -25,29 +25,21 @@ namespace ProximityTests.Pairs
         [TestCaseSource(typeof(Gen), nameof(Gen.Pairs))]
         public void DistanceMatchesDualityOracle(int dim, Kind ka, Kind kb)
         {
-            var rng = new Random(Gen.Seed(dim, ka, kb));
-            for (int i = 0; i < Cases; i++)
+            ForEachCase(dim, ka, kb, 0, (i, a, b, r) =>
             {
-                var a = Gen.Shape(rng, ka, dim);
-                var b = Gen.Shape(rng, kb, dim);
-                var r = Call.Distance(a, b);
                 double s = Gen.Scale(a, b);
                 double expected = Expected(a, b, i);
                 Assert.That(r.D, Is.EqualTo(expected).Within(1e-8 * s), $"case {i}: {a} vs {b}: {r}");
                 // Every direction's gap is a lower bound, so a positive answer attained by real points cannot undercut it.
                 if (r.D > 0) Assert.That(r.D, Is.GreaterThanOrEqualTo(expected - 1e-12 * s), $"case {i}: {a} vs {b}");
-            }
+            });
         }
 
         [TestCaseSource(typeof(Gen), nameof(Gen.Pairs))]
         public void WitnessPointsRealiseTheDistance(int dim, Kind ka, Kind kb)
         {
-            var rng = new Random(Gen.Seed(dim, ka, kb) + 1);
-            for (int i = 0; i < Cases; i++)
+            ForEachCase(dim, ka, kb, 1, (i, a, b, r) =>
             {
-                var a = Gen.Shape(rng, ka, dim);
-                var b = Gen.Shape(rng, kb, dim);
-                var r = Call.Distance(a, b);
                 double s = Gen.Scale(a, b), tol = 1e-12 * s;
                 string at = $"case {i}: {a} vs {b}: {r}";
                 Assert.That(double.IsNaN(r.D) || double.IsNaN(r.PA.X) || double.IsNaN(r.PB.X), Is.False, at);
@@ -61,18 +53,14 @@ namespace ProximityTests.Pairs
                     var moved = a.Translated(r.PB - r.PA);
                     Assert.That(Oracle.SignedDistance(moved, b, i), Is.EqualTo(0).Within(1e-8 * s), "A moved by PB − PA touches B, " + at);
                 }
-            }
+            });
         }
 
         [TestCaseSource(typeof(Gen), nameof(Gen.Pairs))]
         public void SwappedArgumentsSwapTheWitnesses(int dim, Kind ka, Kind kb)
         {
-            var rng = new Random(Gen.Seed(dim, ka, kb) + 2);
-            for (int i = 0; i < Cases; i++)
+            ForEachCase(dim, ka, kb, 2, (i, a, b, r) =>
             {
-                var a = Gen.Shape(rng, ka, dim);
-                var b = Gen.Shape(rng, kb, dim);
-                var r = Call.Distance(a, b);
                 var s = Call.Distance(b, a);
                 string at = $"case {i}: {a} vs {b}: {r} / {s}";
                 if (ka != kb)
@@ -87,7 +75,7 @@ namespace ProximityTests.Pairs
                     Assert.That(s.D, Is.EqualTo(r.D).Within(64 * U * Gen.Scale(a, b)), at);
                 }
                 Assert.That(Call.Overlaps(b, a), Is.EqualTo(Call.Overlaps(a, b)), at);
-            }
+            });
         }
 
         [TestCaseSource(typeof(Gen), nameof(Gen.Pairs))]
@@ -129,19 +117,15 @@ namespace ProximityTests.Pairs
         [TestCaseSource(typeof(Gen), nameof(Gen.Pairs))]
         public void FloatApiIsTheDoubleResultRounded(int dim, Kind ka, Kind kb)
         {
-            var rng = new Random(Gen.Seed(dim, ka, kb) + 5);
-            for (int i = 0; i < Cases; i++)
+            ForEachCase(dim, ka, kb, 5, (i, a, b, r) =>
             {
-                var a = Gen.Shape(rng, ka, dim);
-                var b = Gen.Shape(rng, kb, dim);
-                var r = Call.Distance(a, b);
                 var f = Call.DistanceFloat(a, b);
                 // Float OBB axes are the double axes rounded to float, which moves the box by about 2^-24 of its size.
                 double tol = 4.0 / (1 << 24) * Gen.Scale(a, b);
                 string at = $"case {i}: {a} vs {b}: {r} / {f}";
                 Assert.That(f.D, Is.EqualTo(r.D).Within(tol), at);
                 Assert.That((f.PA - r.PA).Length, Is.LessThanOrEqualTo(tol * 8 + Math.Abs(r.D)), at);
-            }
+            });
         }
 
         [TestCaseSource(typeof(Gen), nameof(Gen.Pairs))]
@@ -170,12 +154,8 @@ namespace ProximityTests.Pairs
         [TestCaseSource(typeof(Gen), nameof(Gen.Pairs))]
         public void TranslationAddsNoErrorGrowingWithDistanceFromOrigin(int dim, Kind ka, Kind kb)
         {
-            var rng = new Random(Gen.Seed(dim, ka, kb) + 7);
-            for (int i = 0; i < Cases; i++)
+            ForEachCase(dim, ka, kb, 7, (i, a, b, r) =>
             {
-                var a = Gen.Shape(rng, ka, dim);
-                var b = Gen.Shape(rng, kb, dim);
-                var r = Call.Distance(a, b);
                 double bound = 64 * U * Gen.Scale(a, b);
                 // Integer offsets up to 2^28 keep the float-valued inputs exact in double, so only the algorithm can add error.
                 foreach (double big in new[] { 1 << 10, 1 << 20, 1 << 28 })
@@ -184,7 +164,7 @@ namespace ProximityTests.Pairs
                     var q = Call.Distance(a.Translated(t), b.Translated(t));
                     Assert.That(q.D, Is.EqualTo(r.D).Within(bound), $"case {i}, T={t}: {a} vs {b}: {r} / {q}");
                 }
-            }
+            });
         }
 
         [TestCaseSource(typeof(Gen), nameof(Gen.Pairs))]
@@ -211,17 +191,13 @@ namespace ProximityTests.Pairs
         [TestCaseSource(typeof(Gen), nameof(Gen.PairsWithoutAabb))]
         public void RotationChangesNothingBeyondRounding(int dim, Kind ka, Kind kb)
         {
-            var rng = new Random(Gen.Seed(dim, ka, kb) + 9);
-            for (int i = 0; i < Cases; i++)
+            ForEachCase(dim, ka, kb, 9, (i, a, b, r) =>
             {
-                var a = Gen.Shape(rng, ka, dim);
-                var b = Gen.Shape(rng, kb, dim);
-                var r = Call.Distance(a, b);
-                var axes = Gen.Axes(rng, dim);
+                var axes = Gen.Axes(new Random(i), dim);
                 Vector3D Rotate(Vector3D v) => axes[0] * v.X + axes[1] * v.Y + axes[2] * v.Z;
                 var q = Call.Distance(a.Map(Rotate, default), b.Map(Rotate, default));
                 Assert.That(q.D, Is.EqualTo(r.D).Within(64 * U * Gen.Scale(a, b)), $"case {i}: {a} vs {b}: {r} / {q}");
-            }
+            });
         }
 
         [TestCaseSource(typeof(Gen), nameof(Gen.Pairs))]
@@ -242,6 +218,18 @@ namespace ProximityTests.Pairs
             Assert.That(r.PA, Is.EqualTo(o), r.ToString());
             Assert.That(r.PB, Is.EqualTo(o), r.ToString());
             Assert.That(Call.Overlaps(Zero(ka), Zero(kb)), Is.True);
+        }
+
+        /// <summary>Runs the check on seeded random configurations of the pair, with the double API's answer.</summary>
+        private static void ForEachCase(int dim, Kind ka, Kind kb, int stream, Action<int, TestShape, TestShape, Res> check)
+        {
+            var rng = new Random(Gen.Seed(dim, ka, kb) + stream);
+            for (int i = 0; i < Cases; i++)
+            {
+                var a = Gen.Shape(rng, ka, dim);
+                var b = Gen.Shape(rng, kb, dim);
+                check(i, a, b, Call.Distance(a, b));
+            }
         }
     }
 }
