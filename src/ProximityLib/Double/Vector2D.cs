@@ -46,6 +46,8 @@ namespace ProximityLib.Double
         public static Vector2D operator *(Vector2D a, double s) => new Vector2D(a.X * s, a.Y * s);
         /// <summary>Scaling by a scalar.</summary>
         public static Vector2D operator *(double s, Vector2D a) => new Vector2D(a.X * s, a.Y * s);
+        /// <summary>Division by a scalar.</summary>
+        public static Vector2D operator /(Vector2D a, double s) => new Vector2D(a.X / s, a.Y / s);
         /// <summary>Exact component-wise equality.</summary>
         public static bool operator ==(Vector2D a, Vector2D b) => a.X == b.X && a.Y == b.Y;
         /// <summary>Exact component-wise inequality.</summary>

@@ -84,12 +84,16 @@ namespace ProximityLib.Double
         {
             var q = box.ToLocal(p - box.Origin);
             var c = new Vector3D(Num.Clamp(q.X, box.Lo.X, box.Hi.X), Num.Clamp(q.Y, box.Lo.Y, box.Hi.Y), Num.Clamp(q.Z, box.Lo.Z, box.Hi.Z));
-            var diff = q - c;
-            double d2 = diff.LengthSquared;
-            if (d2 > 0)
+            if (q != c)
             {
+                // The decision is made in the box frame; the gap is measured in world space from p − origin, which
+                // carries one rounding per component instead of a rotated copy's three.
+                var offset = box.ToWorldOffset(c);
+                var diff = (p - box.Origin) - offset;
+                double d2 = diff.LengthSquared;
                 double d = Math.Sqrt(d2);
-                return new PointContact(d, d2, box.Origin + box.ToWorldOffset(c), box.ToWorldOffset(diff / d), 0);
+                var normal = d > 0 ? diff / d : box.ToWorldOffset(Unit(q - c));
+                return new PointContact(d, d2, box.Origin + offset, normal, 0);
             }
 
             int axes = box.Planar ? 2 : 3;
@@ -106,6 +110,8 @@ namespace ProximityLib.Double
             var axis = box.Axis(bestAxis);
             return new PointContact(-depth, 0, box.Origin + box.ToWorldOffset(face), bestHi ? axis : -axis, 0);
         }
+
+        private static Vector3D Unit(Vector3D v) => v / v.Length;
 
         /// <summary>Whether p lies in the closed box (no square root).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -19,20 +19,26 @@ namespace ProximityLib.Double
             var d0 = a1 - a0;
             var d1 = b1 - b0;
             var w = b0 - a0;
-            var n = Vector3D.Cross(d0, d1);
-            double nn = n.LengthSquared;
             double best = double.PositiveInfinity;
             s = 0; t = 0;
+            // |d0 × d1|² is a fourth power of the configuration's size: solve on a copy scaled by a power of two (exact)
+            // so it neither underflows nor overflows anywhere in the double range.
+            double k = PowerOfTwoScale(Math.Max(MaxAbs(d0), Math.Max(MaxAbs(d1), MaxAbs(w))));
+            var d0k = d0 * k;
+            var d1k = d1 * k;
+            var wk = w * k;
+            var n = Vector3D.Cross(d0k, d1k);
+            double nn = n.LengthSquared;
             if (nn > 0)
             {
-                double si = Vector3D.Dot(Vector3D.Cross(w, d1), n) / nn;
-                double ti = Vector3D.Dot(Vector3D.Cross(w, d0), n) / nn;
+                double si = Vector3D.Dot(Vector3D.Cross(wk, d1k), n) / nn;
+                double ti = Vector3D.Dot(Vector3D.Cross(wk, d0k), n) / nn;
                 if (si >= 0 && si <= 1 && ti >= 0 && ti <= 1)
                 {
                     best = (d0 * si - d1 * ti - w).LengthSquared;
                     s = si; t = ti;
                     // sin²θ ≥ 1e-4: the interior solve is well conditioned and, by convexity, the global minimum.
-                    if (nn >= 1e-4 * d0.LengthSquared * d1.LengthSquared) return best;
+                    if (nn >= 1e-4 * d0k.LengthSquared * d1k.LengthSquared) return best;
                 }
             }
 
@@ -45,6 +51,21 @@ namespace ProximityLib.Double
             r2 = PointSegmentResidual(b1, a0, a1, out sc).LengthSquared;
             if (r2 < best) { best = r2; s = sc; t = 1; }
             return best;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double MaxAbs(Vector3D v) => Math.Max(Math.Abs(v.X), Math.Max(Math.Abs(v.Y), Math.Abs(v.Z)));
+
+        /// <summary>
+        /// A power of two bringing m ≥ 0 into [1, 2) (into [2^-52, 1) for subnormal m, and [2, 4) at the very top):
+        /// 2^(1023 − E) built from m's biased exponent E. Math.ScaleB/ILogB are not in netstandard2.1.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double PowerOfTwoScale(double m)
+        {
+            long biased = (BitConverter.DoubleToInt64Bits(m) >> 52) & 0x7FF;
+            long scaled = Math.Min(2045, Math.Max(1, 2046 - biased));
+            return BitConverter.Int64BitsToDouble(scaled << 52);
         }
 
         public static DistanceResult3 SegmentSegment(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1)

@@ -1,0 +1,107 @@
+using System;
+using ProximityLib.Double;
+
+namespace ProximityReference
+{
+    /// <summary>One case measured: error of the double and float APIs against the exact answer, and the overlap verdicts.</summary>
+    public readonly struct Measurement
+    {
+        public string Family { get; init; }
+        public string Pair { get; init; }
+        public double ErrorDouble { get; init; }
+        public double ErrorFloat { get; init; }
+        public double ErrorDoubleSwapped { get; init; }
+        /// <summary>True when the exact margin is outside the band and the boolean disagrees with the exact verdict.</summary>
+        public bool WrongOverlapDouble { get; init; }
+        public bool WrongOverlapFloat { get; init; }
+        public bool FloatMeasured { get; init; }
+        public double Exact { get; init; }
+        public double Scale { get; init; }
+        public string Case { get; init; }
+        /// <summary>The paper's formula for this pair, when it has one: its E (distances) or whether it was wrong (booleans).</summary>
+        public string? Baseline { get; init; }
+        public double BaselineError { get; init; }
+        public bool BaselineWrong { get; init; }
+    }
+
+    public static class Measure
+    {
+        private static (string?, double, bool) RunBaseline(Case c, Rational exact, double scale, bool decided)
+        {
+            double E(double d) => Exact.Error(d, exact, UDouble, scale);
+            switch (c.A, c.B)
+            {
+                case (Vector3D p, Segment3 s): return ("paper Eq. 9–11", E(PaperFormulas.PointSegment(p, s.Start, s.End)), false);
+                case (Segment3 s, Vector3D p): return ("paper Eq. 9–11", E(PaperFormulas.PointSegment(p, s.Start, s.End)), false);
+                case (Vector2D p, Segment2 s):
+                    return ("paper Eq. 9–11", E(PaperFormulas.PointSegment(new Vector3D(p.X, p.Y, 0), new Vector3D(s.Start.X, s.Start.Y, 0), new Vector3D(s.End.X, s.End.Y, 0))), false);
+                case (Segment3 a, Segment3 b): return ("paper Eq. 13 (normal equations)", E(PaperFormulas.SegmentSegment(a.Start, a.End, b.Start, b.End)), false);
+                case (Segment2 a, Segment2 b): return ("paper Eq. 14–15", E(PaperFormulas.SegmentSegment2(a.Start, a.End, b.Start, b.End)), false);
+                case (Obb3 a, Obb3 b): return ("SAT without ε (Eq. 19–20)", 0, decided && PaperFormulas.ObbObbOverlaps(a, b) != (exact.Sign <= 0));
+                default: return (null, 0, false);
+            }
+        }
+
+        public const double UDouble = 1.0 / (1L << 53);
+        public const double UFloat = 1.0 / (1 << 24);
+        /// <summary>Booleans may answer either way when the exact signed distance is within this many u·S of zero.</summary>
+        public const double Band = 32;
+
+        /// <summary>The promised bound on E for a pair: 4 for point–AABB, point–segment and pairs with a circle/sphere, else 32.</summary>
+        public static double Bound(string pairKey) =>
+            pairKey.Contains("sphere") || pairKey.Contains("circle") || pairKey.EndsWith("point–AABB") || pairKey.EndsWith("point–segment") ? 4 : 32;
+
+        public static Measurement Run(Case c)
+        {
+            var ra = RShape.FromAny(c.A);
+            var rb = RShape.FromAny(c.B);
+            var exact = Exact.SignedDistance(ra, rb);
+            double scale = Exact.Scale(ra, rb);
+            double d = ClosestDistance.Between((dynamic)c.A, (dynamic)c.B).Distance;
+            double ds = ClosestDistance.Between((dynamic)c.B, (dynamic)c.A).Distance;
+            bool overlaps = ProximityQuery.Overlaps((dynamic)c.A, (dynamic)c.B);
+            bool decided = Math.Abs(exact.ToDouble()) > Band * UDouble * scale;
+
+            // The float API on the same inputs rounded to float, against the exact answer for those rounded inputs.
+            double ef = 0;
+            bool wrongF = false, floatMeasured = false;
+            object? fa = null, fb = null;
+            try { fa = Shapes.ToFloat(c.A); fb = Shapes.ToFloat(c.B); }
+            catch (ArgumentException) { /* inputs outside the float range: not a float case */ }
+            if (fa != null && fb != null)
+            {
+                var fra = RShape.FromAny(Shapes.Widen(fa));
+                var frb = RShape.FromAny(Shapes.Widen(fb));
+                var fexact = Exact.SignedDistance(fra, frb);
+                double fscale = Exact.Scale(fra, frb);
+                float df = ProximityLib.ClosestDistance.Between((dynamic)fa, (dynamic)fb).Distance;
+                if (fscale > 0 && double.IsFinite(fscale) && fscale < 1e30)
+                {
+                    floatMeasured = true;
+                    ef = Exact.Error(df, fexact, UFloat, fscale);
+                    bool fo = ProximityLib.ProximityQuery.Overlaps((dynamic)fa, (dynamic)fb);
+                    wrongF = Math.Abs(fexact.ToDouble()) > Band * UFloat * fscale && fo != (fexact.Sign <= 0);
+                }
+            }
+
+            var (baseline, baselineError, baselineWrong) = RunBaseline(c, exact, scale, decided);
+            return new Measurement
+            {
+                Baseline = baseline,
+                BaselineError = baselineError,
+                BaselineWrong = baselineWrong,
+                Family = c.Family,
+                Pair = Shapes.PairKey(c.A, c.B),
+                ErrorDouble = Exact.Error(d, exact, UDouble, scale),
+                ErrorDoubleSwapped = Exact.Error(ds, exact, UDouble, scale),
+                ErrorFloat = ef,
+                FloatMeasured = floatMeasured,
+                WrongOverlapDouble = decided && overlaps != (exact.Sign <= 0),
+                WrongOverlapFloat = wrongF,
+                Exact = exact.ToDouble(),
+                Scale = scale,
+                Case = c.ToString(),
+            };
+        }
+    }
+}
