@@ -35,7 +35,11 @@ namespace ProximityLib.Double
                 double ti = Vector3D.Dot(Vector3D.Cross(wk, d0k), n) / nn;
                 if (si >= 0 && si <= 1 && ti >= 0 && ti <= 1)
                 {
-                    best = (d0 * si - d1 * ti - w).LengthSquared;
+                    // The gap between the lines, (w·n)²/|n|², rather than the residual of the rounded parameters: for
+                    // crossing segments (every 2D interior case) it is exactly 0, and otherwise it carries no error
+                    // from (s, t), which nearly parallel segments determine only loosely.
+                    double wn = Vector3D.Dot(wk, n);
+                    best = wn * wn / nn / k / k;
                     s = si; t = ti;
                     // sin²θ ≥ 1e-4: the interior solve is well conditioned and, by convexity, the global minimum.
                     if (nn >= 1e-4 * d0k.LengthSquared * d1k.LengthSquared) return best;
