@@ -1,0 +1,42 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.Linq;
+using BenchmarkDotNet.Configs;
+using BenchmarkDotNet.Jobs;
+using BenchmarkDotNet.Reports;
+using BenchmarkDotNet.Running;
+using BenchmarkDotNet.Toolchains.InProcess.NoEmit;
+using ProximityBenchmarks;
+
+// dotnet run --project tests/ProximityLib.Benchmarks -c Release -- [--quick] [--report docs] [BenchmarkDotNet args, e.g. --filter '*Sphere*']
+//   --quick   every benchmark once, in process (CI: proves they all run; measures nothing)
+//   --report  after a full run, write docs/performance.md and docs/performance.png from its results
+CultureInfo.CurrentCulture = CultureInfo.InvariantCulture;
+bool quick = args.Contains("--quick");
+int reportAt = Array.IndexOf(args, "--report");
+string? reportDir = reportAt >= 0 && reportAt + 1 < args.Length ? args[reportAt + 1] : null;
+var rest = args.Where((a, i) => a != "--quick" && (reportAt < 0 || (i != reportAt && i != reportAt + 1))).ToArray();
+
+// In-process runs keep the full suite (~400 benchmarks) to minutes on a 2-core machine; the ratios between
+// methods in one run are what the report is about.
+var job = quick
+    ? Job.Dry.WithToolchain(InProcessNoEmitToolchain.Instance)
+    : Job.Default.WithWarmupCount(3).WithIterationCount(7).WithIterationTime(Perfolizer.Horology.TimeInterval.FromMilliseconds(120))
+        .WithToolchain(InProcessNoEmitToolchain.Instance).WithId("InProcess-7x120ms");
+var config = ManualConfig.Create(DefaultConfig.Instance).AddJob(job).WithOptions(ConfigOptions.DisableLogFile);
+
+var pairTypes = typeof(PairBenchmarks<,,>).GetCustomAttributes(typeof(BenchmarkDotNet.Attributes.GenericTypeArgumentsAttribute), false)
+    .Cast<BenchmarkDotNet.Attributes.GenericTypeArgumentsAttribute>()
+    .Select(a => typeof(PairBenchmarks<,,>).MakeGenericType(a.GenericTypeArguments)).ToList();
+var all = pairTypes.Append(typeof(Baselines)).ToArray();
+
+var summaries = rest.Length > 0
+    ? BenchmarkSwitcher.FromTypes(new[] { typeof(PairBenchmarks<,,>), typeof(Baselines) }).Run(rest, config).ToArray()
+    : all.Select(t => BenchmarkRunner.Run(t, config)).ToArray();
+
+int ran = summaries.Sum(s => s.Reports.Count(r => r.Success));
+int failed = summaries.Sum(s => s.Reports.Count(r => !r.Success)) + summaries.Sum(s => s.ValidationErrors.Count());
+Console.WriteLine($"{ran} passed, {failed} failed (benchmarks executed)");
+if (reportDir != null && !quick) Report.Write(summaries, reportDir, job.DisplayInfo);
+return failed == 0 && ran > 0 ? 0 : 1;
