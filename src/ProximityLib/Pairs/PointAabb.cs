@@ -6,11 +6,11 @@ namespace ProximityLib.Double
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between a point and an AABB (3D): negative inside (depth to the nearest face, ties to the lower axis, min face first). Algorithm: clamp to the box (Ericson RTCD §5.1.3; paper Eq. 22); nearest face when inside.</summary>
-        public static DistanceResult3 Between(Vector3D a, Aabb3 b) => Kernels.PointBox(a, b.ToBox()).AsPointFirst(a);
+        public static DistanceResult3 Between(Vector3D a, Aabb3 b) => Kernels.PointAabb(a, b.Min, b.Max, false).AsPointFirst(a);
         /// <summary>Closest distance between an AABB and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult3 Between(Aabb3 a, Vector3D b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and an AABB (2D): negative inside (depth to the nearest face, ties to the lower axis, min face first). Algorithm: clamp to the box (Ericson RTCD §5.1.3; paper Eq. 22); nearest face when inside.</summary>
-        public static DistanceResult2 Between(Vector2D a, Aabb2 b) => (Kernels.PointBox(a.To3(), b.ToBox()).AsPointFirst(a.To3())).To2();
+        public static DistanceResult2 Between(Vector2D a, Aabb2 b) => (Kernels.PointAabb(a.To3(), b.Min.To3(), b.Max.To3(), true).AsPointFirst(a.To3())).To2();
         /// <summary>Closest distance between an AABB and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult2 Between(Aabb2 a, Vector2D b) => Between(b, a).Swapped();
     }
@@ -18,11 +18,11 @@ namespace ProximityLib.Double
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and an AABB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Vector3D a, Aabb3 b) => Kernels.PointInBox(a, b.ToBox());
+        public static bool Overlaps(Vector3D a, Aabb3 b) => Kernels.PointInAabb(a, b.Min, b.Max);
         /// <summary>Whether an AABB and a point (3D) touch or overlap.</summary>
         public static bool Overlaps(Aabb3 a, Vector3D b) => Overlaps(b, a);
         /// <summary>Whether a point and an AABB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Vector2D a, Aabb2 b) => Kernels.PointInBox(a.To3(), b.ToBox());
+        public static bool Overlaps(Vector2D a, Aabb2 b) => Kernels.PointInAabb(a.To3(), b.Min.To3(), b.Max.To3());
         /// <summary>Whether an AABB and a point (2D) touch or overlap.</summary>
         public static bool Overlaps(Aabb2 a, Vector2D b) => Overlaps(b, a);
     }

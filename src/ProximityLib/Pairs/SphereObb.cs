@@ -5,11 +5,11 @@ namespace ProximityLib.Double
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a sphere and an OBB (3D): negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside). Algorithm: point–box from the center, less the radius; overlap by Arvo's squared test (paper Eq. 23).</summary>
+        /// <summary>Closest distance between a sphere and an OBB (3D): negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside). Algorithm: point–box from the center in the box frame, less the radius; overlap by Arvo's squared test.</summary>
         public static DistanceResult3 Between(Sphere a, Obb3 b) => Kernels.PointBox(a.Center, b.ToBox()).AsSphereFirst(a.Center, a.Radius);
         /// <summary>Closest distance between an OBB and a sphere (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult3 Between(Obb3 a, Sphere b) => Between(b, a).Swapped();
-        /// <summary>Closest distance between a circle and an OBB (2D): negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside). Algorithm: point–box from the center, less the radius; overlap by Arvo's squared test (paper Eq. 23).</summary>
+        /// <summary>Closest distance between a circle and an OBB (2D): negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside). Algorithm: point–box from the center in the box frame, less the radius; overlap by Arvo's squared test.</summary>
         public static DistanceResult2 Between(Circle a, Obb2 b) => (Kernels.PointBox(a.Center.To3(), b.ToBox()).AsSphereFirst(a.Center.To3(), a.Radius)).To2();
         /// <summary>Closest distance between an OBB and a circle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult2 Between(Obb2 a, Circle b) => Between(b, a).Swapped();

@@ -160,36 +160,59 @@ namespace ProximityLib.Double
         /// </summary>
         public static DistanceResult3 AabbAabb(Vector3D minA, Vector3D maxA, Vector3D minB, Vector3D maxB, bool planar)
         {
-            double g2 = 0;
-            double depth = double.PositiveInfinity;
-            int depthAxis = 0;
-            bool depthDown = false;
-            Vector3D pa = default, pb = default;
-            for (int i = 0; i < 3; i++)
+            var x = new AxisGap(minA.X, maxA.X, minB.X, maxB.X);
+            var y = new AxisGap(minA.Y, maxA.Y, minB.Y, maxB.Y);
+            var z = new AxisGap(minA.Z, maxA.Z, minB.Z, maxB.Z);
+            double g2 = x.Gap2 + y.Gap2 + z.Gap2;
+            var pa = new Vector3D(x.A, y.A, z.A);
+            var pb = new Vector3D(x.B, y.B, z.B);
+            if (g2 > 0) return new DistanceResult3(Math.Sqrt(g2), g2, pa, pb, 0, 0);
+
+            // Overlapping on every axis: push A out along the axis of least overlap, down before up, x before y before z.
+            double depth = x.Down;
+            int face = 0;
+            if (x.Up < depth) { depth = x.Up; face = 1; }
+            if (y.Down < depth) { depth = y.Down; face = 2; }
+            if (y.Up < depth) { depth = y.Up; face = 3; }
+            if (!planar)
             {
-                double aLo = Vec.Get(minA, i), aHi = Vec.Get(maxA, i), bLo = Vec.Get(minB, i), bHi = Vec.Get(maxB, i);
+                if (z.Down < depth) { depth = z.Down; face = 4; }
+                if (z.Up < depth) { depth = z.Up; face = 5; }
+            }
+            // Moving A down along the axis by `depth` puts its max face on B's min face, and vice versa.
+            switch (face)
+            {
+                case 0: pa = new Vector3D(maxA.X, pa.Y, pa.Z); pb = new Vector3D(minB.X, pb.Y, pb.Z); break;
+                case 1: pa = new Vector3D(minA.X, pa.Y, pa.Z); pb = new Vector3D(maxB.X, pb.Y, pb.Z); break;
+                case 2: pa = new Vector3D(pa.X, maxA.Y, pa.Z); pb = new Vector3D(pb.X, minB.Y, pb.Z); break;
+                case 3: pa = new Vector3D(pa.X, minA.Y, pa.Z); pb = new Vector3D(pb.X, maxB.Y, pb.Z); break;
+                case 4: pa = new Vector3D(pa.X, pa.Y, maxA.Z); pb = new Vector3D(pb.X, pb.Y, minB.Z); break;
+                default: pa = new Vector3D(pa.X, pa.Y, minA.Z); pb = new Vector3D(pb.X, pb.Y, maxB.Z); break;
+            }
+            return new DistanceResult3(-depth, 0, pa, pb, 0, 0);
+        }
+
+        /// <summary>One axis of an AABB pair: the gap (if apart), the witness coordinates, and both push-out distances.</summary>
+        private readonly struct AxisGap
+        {
+            public readonly double Gap2, A, B, Down, Up;
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public AxisGap(double aLo, double aHi, double bLo, double bHi)
+            {
                 double above = bLo - aHi, below = aLo - bHi;
-                double va, vb;
-                if (above > 0) { g2 += above * above; va = aHi; vb = bLo; }
-                else if (below > 0) { g2 += below * below; va = aLo; vb = bHi; }
+                Down = -above;
+                Up = -below;
+                if (above > 0) { Gap2 = above * above; A = aHi; B = bLo; }
+                else if (below > 0) { Gap2 = below * below; A = aLo; B = bHi; }
                 else
                 {
+                    // Shared interval: both witnesses at its middle.
                     double lo = Math.Max(aLo, bLo), hi = Math.Min(aHi, bHi);
-                    va = vb = lo + 0.5 * (hi - lo);
-                    if (!(planar && i == 2))
-                    {
-                        if (-above < depth) { depth = -above; depthAxis = i; depthDown = true; }
-                        if (-below < depth) { depth = -below; depthAxis = i; depthDown = false; }
-                    }
+                    Gap2 = 0;
+                    A = B = lo + 0.5 * (hi - lo);
                 }
-                pa = Vec.With(pa, i, va);
-                pb = Vec.With(pb, i, vb);
             }
-            if (g2 > 0) return new DistanceResult3(Math.Sqrt(g2), g2, pa, pb, 0, 0);
-            // Moving A down along the axis by `depth` puts its max face on B's min face, and vice versa.
-            pa = Vec.With(pa, depthAxis, Vec.Get(depthDown ? maxA : minA, depthAxis));
-            pb = Vec.With(pb, depthAxis, Vec.Get(depthDown ? minB : maxB, depthAxis));
-            return new DistanceResult3(-depth, 0, pa, pb, 0, 0);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -57,9 +57,6 @@ namespace ProximityLib.Double
             return best;
         }
 
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double MaxAbs(Vector3D v) => Math.Max(Math.Abs(v.X), Math.Max(Math.Abs(v.Y), Math.Abs(v.Z)));
-
         /// <summary>
         /// A power of two bringing m ≥ 0 into [1, 2) (into [2^-52, 1) for subnormal m, and [2, 4) at the very top):
         /// 2^(1023 − E) built from m's biased exponent E. Math.ScaleB/ILogB are not in netstandard2.1.
