@@ -118,41 +118,46 @@ namespace ProximityLib.Double
         public static bool BoxBoxOverlaps(in Box a, in Box b)
         {
             var tw = (b.Origin - a.Origin) + b.ToWorldOffset(b.LocalCenter) - a.ToWorldOffset(a.LocalCenter);
-            var t = a.ToLocal(tw);
-            var r0 = a.ToLocal(b.X);
-            var r1 = a.ToLocal(b.Y);
-            var r2 = a.ToLocal(b.Z);
+            double tx = Vector3D.Dot(tw, a.X), ty = Vector3D.Dot(tw, a.Y), tz = Vector3D.Dot(tw, a.Z);
+            // r_ij = a_i · b_j: B's axes as columns in A's frame.
+            double r00 = Vector3D.Dot(a.X, b.X), r01 = Vector3D.Dot(a.X, b.Y), r02 = Vector3D.Dot(a.X, b.Z);
+            double r10 = Vector3D.Dot(a.Y, b.X), r11 = Vector3D.Dot(a.Y, b.Y), r12 = Vector3D.Dot(a.Y, b.Z);
+            double r20 = Vector3D.Dot(a.Z, b.X), r21 = Vector3D.Dot(a.Z, b.Y), r22 = Vector3D.Dot(a.Z, b.Z);
             var ha = a.Half;
             var hb = b.Half;
+            double q00 = Math.Abs(r00), q01 = Math.Abs(r01), q02 = Math.Abs(r02);
+            double q10 = Math.Abs(r10), q11 = Math.Abs(r11), q12 = Math.Abs(r12);
+            double q20 = Math.Abs(r20), q21 = Math.Abs(r21), q22 = Math.Abs(r22);
             bool planar = a.Planar || b.Planar;
 
-            // A's face axes: e_i, where B's radius is Σ_k hb_k |R_k,i|.
-            if (Math.Abs(t.X) > ha.X + hb.X * Math.Abs(r0.X) + hb.Y * Math.Abs(r1.X) + hb.Z * Math.Abs(r2.X)) return false;
-            if (Math.Abs(t.Y) > ha.Y + hb.X * Math.Abs(r0.Y) + hb.Y * Math.Abs(r1.Y) + hb.Z * Math.Abs(r2.Y)) return false;
-            if (!planar && Math.Abs(t.Z) > ha.Z + hb.X * Math.Abs(r0.Z) + hb.Y * Math.Abs(r1.Z) + hb.Z * Math.Abs(r2.Z)) return false;
-            // B's face axes.
-            if (Math.Abs(Vector3D.Dot(t, r0)) > Vector3D.Dot(ha, Vec.Abs(r0)) + hb.X) return false;
-            if (Math.Abs(Vector3D.Dot(t, r1)) > Vector3D.Dot(ha, Vec.Abs(r1)) + hb.Y) return false;
+            // A's and B's face axes.
+            if (Math.Abs(tx) > ha.X + hb.X * q00 + hb.Y * q01 + hb.Z * q02) return false;
+            if (Math.Abs(ty) > ha.Y + hb.X * q10 + hb.Y * q11 + hb.Z * q12) return false;
+            if (Math.Abs(tx * r00 + ty * r10 + tz * r20) > ha.X * q00 + ha.Y * q10 + ha.Z * q20 + hb.X) return false;
+            if (Math.Abs(tx * r01 + ty * r11 + tz * r21) > ha.X * q01 + ha.Y * q11 + ha.Z * q21 + hb.Y) return false;
             if (planar) return true;
-            if (Math.Abs(Vector3D.Dot(t, r2)) > Vector3D.Dot(ha, Vec.Abs(r2)) + hb.Z) return false;
-            // Edge × edge axes e_i × R_j.
-            return !CrossSeparates(t, ha, hb, r0, r1, r2, r0) && !CrossSeparates(t, ha, hb, r0, r1, r2, r1)
-                && !CrossSeparates(t, ha, hb, r0, r1, r2, r2);
-        }
+            if (Math.Abs(tz) > ha.Z + hb.X * q20 + hb.Y * q21 + hb.Z * q22) return false;
+            if (Math.Abs(tx * r02 + ty * r12 + tz * r22) > ha.X * q02 + ha.Y * q12 + ha.Z * q22 + hb.Z) return false;
 
-        private static bool CrossSeparates(Vector3D t, Vector3D ha, Vector3D hb, Vector3D r0, Vector3D r1, Vector3D r2, Vector3D rj)
-        {
-            return AxisSeparates(new Vector3D(0, -rj.Z, rj.Y), t, ha, hb, r0, r1, r2)
-                || AxisSeparates(new Vector3D(rj.Z, 0, -rj.X), t, ha, hb, r0, r1, r2)
-                || AxisSeparates(new Vector3D(-rj.Y, rj.X, 0), t, ha, hb, r0, r1, r2);
+            // Edge × edge axes L = e_i × b_j. B's radius uses b_k·L, the 2×2 minors of R, rather than the orthonormality
+            // shortcut |r|: a nearly degenerate L then still yields a true projection, so it can only fail to separate.
+            // e_x × b_j = (0, −r2j, r1j)
+            if (Separates(tz * r10 - ty * r20, ha.Y * q20 + ha.Z * q10, hb.Y, r11 * r20 - r21 * r10, hb.Z, r12 * r20 - r22 * r10)) return false;
+            if (Separates(tz * r11 - ty * r21, ha.Y * q21 + ha.Z * q11, hb.X, r10 * r21 - r20 * r11, hb.Z, r12 * r21 - r22 * r11)) return false;
+            if (Separates(tz * r12 - ty * r22, ha.Y * q22 + ha.Z * q12, hb.X, r10 * r22 - r20 * r12, hb.Y, r11 * r22 - r21 * r12)) return false;
+            // e_y × b_j = (r2j, 0, −r0j)
+            if (Separates(tx * r20 - tz * r00, ha.X * q20 + ha.Z * q00, hb.Y, r01 * r20 - r21 * r00, hb.Z, r02 * r20 - r22 * r00)) return false;
+            if (Separates(tx * r21 - tz * r01, ha.X * q21 + ha.Z * q01, hb.X, r00 * r21 - r20 * r01, hb.Z, r02 * r21 - r22 * r01)) return false;
+            if (Separates(tx * r22 - tz * r02, ha.X * q22 + ha.Z * q02, hb.X, r00 * r22 - r20 * r02, hb.Y, r01 * r22 - r21 * r02)) return false;
+            // e_z × b_j = (−r1j, r0j, 0)
+            if (Separates(ty * r00 - tx * r10, ha.X * q10 + ha.Y * q00, hb.Y, r11 * r00 - r01 * r10, hb.Z, r12 * r00 - r02 * r10)) return false;
+            if (Separates(ty * r01 - tx * r11, ha.X * q11 + ha.Y * q01, hb.X, r10 * r01 - r00 * r11, hb.Z, r12 * r01 - r02 * r11)) return false;
+            return !Separates(ty * r02 - tx * r12, ha.X * q12 + ha.Y * q02, hb.X, r10 * r02 - r00 * r12, hb.Y, r11 * r02 - r01 * r12);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static bool AxisSeparates(Vector3D l, Vector3D t, Vector3D ha, Vector3D hb, Vector3D r0, Vector3D r1, Vector3D r2)
-        {
-            double rb = hb.X * Math.Abs(Vector3D.Dot(r0, l)) + hb.Y * Math.Abs(Vector3D.Dot(r1, l)) + hb.Z * Math.Abs(Vector3D.Dot(r2, l));
-            return Math.Abs(Vector3D.Dot(t, l)) > Vector3D.Dot(ha, Vec.Abs(l)) + rb;
-        }
+        private static bool Separates(double tl, double ra, double h1, double m1, double h2, double m2) =>
+            Math.Abs(tl) > ra + h1 * Math.Abs(m1) + h2 * Math.Abs(m2);
 
         /// <summary>
         /// AABB against AABB, per axis and exact up to one subtraction per gap. Apart: the per-axis gaps; overlapping axes

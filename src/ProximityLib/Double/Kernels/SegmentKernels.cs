@@ -7,45 +7,60 @@ namespace ProximityLib.Double
     {
         /// <summary>
         /// Squared distance between segments [a0, a1] and [b0, b1] and the parameters (s, t) of a closest pair.
-        /// The objective is a convex quadratic on the unit square, so its minimum is the interior stationary point or
-        /// lies on one of the four square edges, each of which is a point–segment query (Eberly, "Robust Computation of
-        /// Distance Between Line Segments", the same case split). The interior point uses the Lagrange form
-        /// det = |d0 × d1|² instead of |d0|²|d1|² − (d0·d1)², which cancels to noise for nearly parallel segments.
-        /// When the pair is ill-conditioned every candidate is evaluated and the smallest kept, so no noisy parameter
-        /// can win unless it is honestly the closest.
+        /// The objective is a convex quadratic on the unit square. The lines' closest parameters come from the Lagrange
+        /// identity |d0|²|d1|² − (d0·d1)² = |d0 × d1|² with cross-product numerators (the usual determinant cancels to
+        /// noise for nearly parallel segments), on a copy scaled by a power of two because |d0 × d1|² is a fourth power
+        /// of the size. Well conditioned: inside is the answer, outside is clamped s, best t for it, and best s for a
+        /// clamped t (Ericson, Real-Time Collision Detection §5.1.9). Nearly parallel or parallel: the best of the
+        /// interior point and the four endpoint–segment candidates (the case split of Eberly's robust method).
         /// </summary>
         public static double SegmentSegmentCore(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, out double s, out double t)
         {
             var d0 = a1 - a0;
             var d1 = b1 - b0;
             var w = b0 - a0;
-            double best = double.PositiveInfinity;
-            s = 0; t = 0;
-            // |d0 × d1|² is a fourth power of the configuration's size: solve on a copy scaled by a power of two (exact)
-            // so it neither underflows nor overflows anywhere in the double range.
+            double a = d0.LengthSquared, e = d1.LengthSquared;
+            double b = Vector3D.Dot(d0, d1), c = -Vector3D.Dot(d0, w), f = -Vector3D.Dot(d1, w);
+            if (a == 0 || e == 0)
+            {
+                // A point against a segment (or a point).
+                if (a == 0 && e == 0) { s = 0; t = 0; return w.LengthSquared; }
+                if (a == 0) { s = 0; t = Num.Clamp(f / e, 0, 1); }
+                else { t = 0; s = Num.Clamp(-c / a, 0, 1); }
+                return Residual(d0, d1, w, s, t);
+            }
+
             double k = PowerOfTwoScale(Math.Max(MaxAbs(d0), Math.Max(MaxAbs(d1), MaxAbs(w))));
             var d0k = d0 * k;
             var d1k = d1 * k;
             var wk = w * k;
             var n = Vector3D.Cross(d0k, d1k);
             double nn = n.LengthSquared;
-            if (nn > 0)
+            double si = nn > 0 ? Vector3D.Dot(Vector3D.Cross(wk, d1k), n) / nn : 0;
+            double ti = nn > 0 ? Vector3D.Dot(Vector3D.Cross(wk, d0k), n) / nn : 0;
+            bool interior = nn > 0 && si >= 0 && si <= 1 && ti >= 0 && ti <= 1;
+            // The gap between the lines, (w·n)²/|n|², carries no error from (s, t), which nearly parallel segments
+            // determine only loosely; crossing 2D segments give exactly 0.
+            double wn = Vector3D.Dot(wk, n);
+            double lineGap = interior ? wn * wn / nn / k / k : double.PositiveInfinity;
+
+            if (nn >= 1e-4 * d0k.LengthSquared * d1k.LengthSquared)
             {
-                double si = Vector3D.Dot(Vector3D.Cross(wk, d1k), n) / nn;
-                double ti = Vector3D.Dot(Vector3D.Cross(wk, d0k), n) / nn;
-                if (si >= 0 && si <= 1 && ti >= 0 && ti <= 1)
-                {
-                    // The gap between the lines, (w·n)²/|n|², rather than the residual of the rounded parameters: for
-                    // crossing segments (every 2D interior case) it is exactly 0, and otherwise it carries no error
-                    // from (s, t), which nearly parallel segments determine only loosely.
-                    double wn = Vector3D.Dot(wk, n);
-                    best = wn * wn / nn / k / k;
-                    s = si; t = ti;
-                    // sin²θ ≥ 1e-4: the interior solve is well conditioned and, by convexity, the global minimum.
-                    if (nn >= 1e-4 * d0k.LengthSquared * d1k.LengthSquared) return best;
-                }
+                // Well conditioned (sin²θ ≥ 1e-4): the interior point is the minimum when it is inside; otherwise clamp.
+                s = si; t = ti;
+                if (interior) return lineGap;
+                s = Num.Clamp(si, 0, 1);
+                double tNum = b * s + f;
+                if (tNum < 0) { t = 0; s = Num.Clamp(-c / a, 0, 1); }
+                else if (tNum > e) { t = 1; s = Num.Clamp((b - c) / a, 0, 1); }
+                else t = tNum / e;
+                return Residual(d0, d1, w, s, t);
             }
 
+            // Nearly parallel: the clamped sequence would start from a noisy s, so take the best of the interior point and
+            // the four endpoint–segment candidates; each is a pair of real points, so a noisy one can only lose.
+            double best = lineGap;
+            s = si; t = ti;
             double r2 = PointSegmentResidual(a0, b0, b1, out double tc).LengthSquared;
             if (r2 < best) { best = r2; s = 0; t = tc; }
             r2 = PointSegmentResidual(a1, b0, b1, out tc).LengthSquared;
@@ -55,6 +70,16 @@ namespace ProximityLib.Double
             r2 = PointSegmentResidual(b1, a0, a1, out sc).LengthSquared;
             if (r2 < best) { best = r2; s = sc; t = 1; }
             return best;
+        }
+
+        /// <summary>|a0 + s·d0 − b0 − t·d1|², formed from the differences so no endpoint's position enters.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Residual(Vector3D d0, Vector3D d1, Vector3D w, double s, double t) => (d0 * s - d1 * t - w).LengthSquared;
+
+        public static DistanceResult3 SegmentSegment(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1)
+        {
+            double r2 = SegmentSegmentCore(a0, a1, b0, b1, out double s, out double t);
+            return new DistanceResult3(Math.Sqrt(r2), r2, SegmentPoint(a0, a1, s), SegmentPoint(b0, b1, t), s, t);
         }
 
         /// <summary>
@@ -69,11 +94,6 @@ namespace ProximityLib.Double
             return BitConverter.Int64BitsToDouble(scaled << 52);
         }
 
-        public static DistanceResult3 SegmentSegment(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1)
-        {
-            double r2 = SegmentSegmentCore(a0, a1, b0, b1, out double s, out double t);
-            return new DistanceResult3(Math.Sqrt(r2), r2, SegmentPoint(a0, a1, s), SegmentPoint(b0, b1, t), s, t);
-        }
 
         /// <summary>
         /// Minimum over t ∈ [0, 1] of the squared distance from a + t·d to the box [lo, hi] (all box-local). The function is
