@@ -23,17 +23,17 @@ var rest = args.Where((a, i) => a != "--quick" && (reportAt < 0 || (i != reportA
 // between methods in one run are what the report is about.
 var job = quick
     ? Job.Dry.WithToolchain(InProcessNoEmitToolchain.Instance)
-    : Job.Default.WithEvaluateOverhead(false).WithIterationTime(Perfolizer.Horology.TimeInterval.FromMilliseconds(80))
-        .WithWarmupCount(4).WithIterationCount(7).WithToolchain(InProcessNoEmitToolchain.Instance).WithId("InProcess-7x80ms");
+    : Job.Default.WithEvaluateOverhead(false).WithIterationTime(Perfolizer.Horology.TimeInterval.FromMilliseconds(25))
+        .WithWarmupCount(3).WithIterationCount(5).WithToolchain(InProcessNoEmitToolchain.Instance).WithId("InProcess-5x25ms");
 var config = ManualConfig.Create(DefaultConfig.Instance).AddJob(job).WithOptions(ConfigOptions.DisableLogFile);
 
 var pairTypes = typeof(PairBenchmarks<,,>).GetCustomAttributes(typeof(BenchmarkDotNet.Attributes.GenericTypeArgumentsAttribute), false)
     .Cast<BenchmarkDotNet.Attributes.GenericTypeArgumentsAttribute>()
     .Select(a => typeof(PairBenchmarks<,,>).MakeGenericType(a.GenericTypeArguments)).ToList();
-var all = pairTypes.Append(typeof(Baselines)).ToArray();
+var all = pairTypes.Append(typeof(Baselines)).Append(typeof(BatchBenchmarks)).ToArray();
 
 var summaries = rest.Length > 0
-    ? BenchmarkSwitcher.FromTypes(new[] { typeof(PairBenchmarks<,,>), typeof(Baselines) }).Run(rest, config).ToArray()
+    ? BenchmarkSwitcher.FromTypes(new[] { typeof(PairBenchmarks<,,>), typeof(Baselines), typeof(BatchBenchmarks) }).Run(rest, config).ToArray()
     : all.Select(t => BenchmarkRunner.Run(t, config)).ToArray();
 
 int ran = summaries.Sum(s => s.Reports.Count(r => r.Success));

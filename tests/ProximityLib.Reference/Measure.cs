@@ -1,4 +1,5 @@
 using System;
+using ProximityLib.Batch;
 using ProximityLib.Double;
 
 namespace ProximityReference
@@ -15,6 +16,8 @@ namespace ProximityReference
         public bool WrongOverlapDouble { get; init; }
         public bool WrongOverlapFloat { get; init; }
         public bool FloatMeasured { get; init; }
+        /// <summary>E of the SIMD batch query on the float inputs, where the pair has one (NaN otherwise).</summary>
+        public double ErrorBatch { get; init; }
         public double Exact { get; init; }
         public double Scale { get; init; }
         public string Case { get; init; }
@@ -51,6 +54,20 @@ namespace ProximityReference
         public static double Bound(string pairKey) =>
             pairKey.Contains("sphere") || pairKey.Contains("circle") || pairKey.EndsWith("point–AABB") || pairKey.EndsWith("point–segment") ? 4 : 32;
 
+        /// <summary>The batch query's distance for one pair, through sets of one, when the batch API covers the pair.</summary>
+        private static float? Batch(object a, object b)
+        {
+            var d = new float[1];
+            switch (a, b)
+            {
+                case (ProximityLib.Sphere x, ProximityLib.Sphere y): BatchQuery.Distances(new SphereSet(new[] { x }), new SphereSet(new[] { y }), d); return d[0];
+                case (System.Numerics.Vector3 x, ProximityLib.Aabb3 y): BatchQuery.Distances(new PointSet(new[] { x }), new AabbSet(new[] { y }), d); return d[0];
+                case (ProximityLib.Sphere x, ProximityLib.Aabb3 y): BatchQuery.Distances(new SphereSet(new[] { x }), new AabbSet(new[] { y }), d); return d[0];
+                case (ProximityLib.Sphere x, ProximityLib.Obb3 y): BatchQuery.Distances(new SphereSet(new[] { x }), new ObbSet(new[] { y }), d); return d[0];
+                default: return null;
+            }
+        }
+
         public static Measurement Run(Case c)
         {
             var ra = RShape.FromAny(c.A);
@@ -63,7 +80,7 @@ namespace ProximityReference
             bool decided = Math.Abs(exact.ToDouble()) > Band * UDouble * scale;
 
             // The float API on the same inputs rounded to float, against the exact answer for those rounded inputs.
-            double ef = 0;
+            double ef = 0, eb = double.NaN;
             bool wrongF = false, floatMeasured = false;
             object? fa = null, fb = null;
             try { fa = Shapes.ToFloat(c.A); fb = Shapes.ToFloat(c.B); }
@@ -80,6 +97,8 @@ namespace ProximityReference
                     floatMeasured = true;
                     ef = Exact.Error(df, fexact, UFloat, fscale);
                     bool fo = ProximityLib.ProximityQuery.Overlaps((dynamic)fa, (dynamic)fb);
+                    float? db = Batch(fa, fb) ?? Batch(fb, fa);
+                    if (db.HasValue) eb = Exact.Error(db.Value, fexact, UFloat, fscale);
                     wrongF = Math.Abs(fexact.ToDouble()) > Band * UFloat * fscale && fo != (fexact.Sign <= 0);
                 }
             }
@@ -95,6 +114,7 @@ namespace ProximityReference
                 ErrorDouble = Exact.Error(d, exact, UDouble, scale),
                 ErrorDoubleSwapped = Exact.Error(ds, exact, UDouble, scale),
                 ErrorFloat = ef,
+                ErrorBatch = eb,
                 FloatMeasured = floatMeasured,
                 WrongOverlapDouble = decided && overlaps != (exact.Sign <= 0),
                 WrongOverlapFloat = wrongF,

@@ -28,6 +28,7 @@ namespace ProximityTests.Accuracy
                 Assert.That(m.ErrorDouble, Is.LessThanOrEqualTo(bound), $"E double, {m.Pair}: {c}");
                 Assert.That(m.ErrorDoubleSwapped, Is.LessThanOrEqualTo(bound), $"E double swapped, {m.Pair}: {c}");
                 Assert.That(m.ErrorFloat, Is.LessThanOrEqualTo(2), $"E float, {m.Pair}: {c}");
+                if (!double.IsNaN(m.ErrorBatch)) Assert.That(m.ErrorBatch, Is.LessThanOrEqualTo(8), $"E batch, {m.Pair}: {c}");
                 Assert.That(m.WrongOverlapDouble, Is.False, $"overlap verdict (double), {m.Pair}: {c}, exact {m.Exact:R}");
                 Assert.That(m.WrongOverlapFloat, Is.False, $"overlap verdict (float), {m.Pair}: {c}");
             }
