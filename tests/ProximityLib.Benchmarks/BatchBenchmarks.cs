@@ -18,7 +18,8 @@ namespace ProximityBenchmarks
         private SphereSet _spheres = null!, _spheresB = null!, _spheresAabb = null!, _spheresObb = null!;
         private PointSet _points = null!;
         private AabbSet _aabbsP = null!, _aabbsS = null!, _aabbsA = null!, _aabbsB = null!;
-        private ObbSet _obbs = null!;
+        private ObbSet _obbs = null!, _obbsA = null!, _obbsB = null!;
+        private SegmentSet _segA = null!, _segB = null!;
         private readonly float[] _distances = new float[Inputs.Count];
         private readonly bool[] _verdicts = new bool[Inputs.Count];
 
@@ -35,6 +36,10 @@ namespace ProximityBenchmarks
             _aabbsA = new AabbSet(a); _aabbsB = new AabbSet(b);
             var (so, o) = Inputs.Typed<F.Sphere, F.Obb3>("3D sphere–OBB", Distribution, true);
             _spheresObb = new SphereSet(so); _obbs = new ObbSet(o);
+            var (sg1, sg2) = Inputs.Typed<F.Segment3, F.Segment3>("3D segment–segment", Distribution, true);
+            _segA = new SegmentSet(sg1); _segB = new SegmentSet(sg2);
+            var (o1, o2) = Inputs.Typed<F.Obb3, F.Obb3>("3D OBB–OBB", Distribution, true);
+            _obbsA = new ObbSet(o1); _obbsB = new ObbSet(o2);
         }
 
         [Benchmark(OperationsPerInvoke = Inputs.Count, Description = "3D sphere–sphere distance | ours, batch")]
@@ -51,5 +56,11 @@ namespace ProximityBenchmarks
 
         [Benchmark(OperationsPerInvoke = Inputs.Count, Description = "3D sphere–OBB distance | ours, batch")]
         public float SphereObb() { BatchQuery.Distances(_spheresObb, _obbs, _distances); return _distances[7]; }
+
+        [Benchmark(OperationsPerInvoke = Inputs.Count, Description = "3D segment–segment distance | ours, batch")]
+        public float SegmentSegment() { BatchQuery.Distances(_segA, _segB, _distances); return _distances[7]; }
+
+        [Benchmark(OperationsPerInvoke = Inputs.Count, Description = "3D OBB–OBB overlap | ours, batch")]
+        public bool ObbObb() { BatchQuery.Overlaps(_obbsA, _obbsB, _verdicts); return _verdicts[7]; }
     }
 }

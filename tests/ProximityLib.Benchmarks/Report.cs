@@ -87,6 +87,7 @@ namespace ProximityBenchmarks
                 ("3D segment–segment", "distance", "ours, float", 14.0), ("3D OBB–OBB", "overlap", "ours, float", 15.0),
                 ("3D sphere–sphere", "distance", "ours, batch", 0.5), ("3D point–AABB", "distance", "ours, batch", 0.6),
                 ("3D AABB–AABB", "overlap", "ours, batch", 0.5), ("3D sphere–OBB", "distance", "ours, batch", 1.2),
+                ("3D segment–segment", "distance", "ours, batch", 2.5), ("3D OBB–OBB", "overlap", "ours, batch", 6.0),
             })
             {
                 var row = rows.FirstOrDefault(r => r.Query == query && r.Op == op && r.Method == method && r.Distribution == "mixed");

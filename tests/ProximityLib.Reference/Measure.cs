@@ -64,6 +64,7 @@ namespace ProximityReference
                 case (System.Numerics.Vector3 x, ProximityLib.Aabb3 y): BatchQuery.Distances(new PointSet(new[] { x }), new AabbSet(new[] { y }), d); return d[0];
                 case (ProximityLib.Sphere x, ProximityLib.Aabb3 y): BatchQuery.Distances(new SphereSet(new[] { x }), new AabbSet(new[] { y }), d); return d[0];
                 case (ProximityLib.Sphere x, ProximityLib.Obb3 y): BatchQuery.Distances(new SphereSet(new[] { x }), new ObbSet(new[] { y }), d); return d[0];
+                case (ProximityLib.Segment3 x, ProximityLib.Segment3 y): BatchQuery.Distances(new SegmentSet(new[] { x }), new SegmentSet(new[] { y }), d); return d[0];
                 default: return null;
             }
         }

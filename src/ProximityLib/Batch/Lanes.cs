@@ -85,6 +85,92 @@ namespace ProximityLib.Batch
         public Vector<float> MaxZ(int i) => _maxZ;
     }
 
+    internal interface ISegments
+    {
+        Vector<float> AX(int i);
+        Vector<float> AY(int i);
+        Vector<float> AZ(int i);
+        Vector<float> BX(int i);
+        Vector<float> BY(int i);
+        Vector<float> BZ(int i);
+    }
+
+    internal readonly struct SegmentLanes : ISegments
+    {
+        private readonly SegmentSet _s;
+        public SegmentLanes(SegmentSet s) { _s = s; }
+        public Vector<float> AX(int i) => new Vector<float>(_s.AX, i);
+        public Vector<float> AY(int i) => new Vector<float>(_s.AY, i);
+        public Vector<float> AZ(int i) => new Vector<float>(_s.AZ, i);
+        public Vector<float> BX(int i) => new Vector<float>(_s.BX, i);
+        public Vector<float> BY(int i) => new Vector<float>(_s.BY, i);
+        public Vector<float> BZ(int i) => new Vector<float>(_s.BZ, i);
+    }
+
+    internal readonly struct SegmentBroadcast : ISegments
+    {
+        private readonly Vector<float> _ax, _ay, _az, _bx, _by, _bz;
+        public SegmentBroadcast(Vector3 a, Vector3 b)
+        {
+            _ax = new Vector<float>(a.X); _ay = new Vector<float>(a.Y); _az = new Vector<float>(a.Z);
+            _bx = new Vector<float>(b.X); _by = new Vector<float>(b.Y); _bz = new Vector<float>(b.Z);
+        }
+        public Vector<float> AX(int i) => _ax;
+        public Vector<float> AY(int i) => _ay;
+        public Vector<float> AZ(int i) => _az;
+        public Vector<float> BX(int i) => _bx;
+        public Vector<float> BY(int i) => _by;
+        public Vector<float> BZ(int i) => _bz;
+    }
+
+    /// <summary>Oriented boxes lane by lane: center, axes (row-wise: X axis, Y axis, Z axis) and half-extents.</summary>
+    internal interface IObbs
+    {
+        void Load(int i, out V3 center, out V3 x, out V3 y, out V3 z, out V3 half);
+    }
+
+    /// <summary>Three lanes of coordinates.</summary>
+    internal struct V3
+    {
+        public Vector<float> X, Y, Z;
+        public V3(Vector<float> x, Vector<float> y, Vector<float> z) { X = x; Y = y; Z = z; }
+        public static V3 Broadcast(Vector3 v) => new V3(new Vector<float>(v.X), new Vector<float>(v.Y), new Vector<float>(v.Z));
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Vector<float> Dot(in V3 a, in V3 b) => a.X * b.X + a.Y * b.Y + a.Z * b.Z;
+    }
+
+    internal readonly struct ObbLanes : IObbs
+    {
+        private readonly ObbSet _s;
+        public ObbLanes(ObbSet s) { _s = s; }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void Load(int i, out V3 center, out V3 x, out V3 y, out V3 z, out V3 half)
+        {
+            center = new V3(new Vector<float>(_s.CX, i), new Vector<float>(_s.CY, i), new Vector<float>(_s.CZ, i));
+            x = new V3(new Vector<float>(_s.XX, i), new Vector<float>(_s.XY, i), new Vector<float>(_s.XZ, i));
+            y = new V3(new Vector<float>(_s.YX, i), new Vector<float>(_s.YY, i), new Vector<float>(_s.YZ, i));
+            z = new V3(new Vector<float>(_s.ZX, i), new Vector<float>(_s.ZY, i), new Vector<float>(_s.ZZ, i));
+            half = new V3(new Vector<float>(_s.HX, i), new Vector<float>(_s.HY, i), new Vector<float>(_s.HZ, i));
+        }
+    }
+
+    internal readonly struct ObbBroadcast : IObbs
+    {
+        private readonly V3 _c, _x, _y, _z, _h;
+        public ObbBroadcast(Obb3 b)
+        {
+            _c = V3.Broadcast(b.Center); _x = V3.Broadcast(b.AxisX); _y = V3.Broadcast(b.AxisY); _z = V3.Broadcast(b.AxisZ);
+            _h = V3.Broadcast(b.HalfExtents);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void Load(int i, out V3 center, out V3 x, out V3 y, out V3 z, out V3 half)
+        {
+            center = _c; x = _x; y = _y; z = _z; half = _h;
+        }
+    }
+
     /// <summary>A per-lane computation over a batch: values to report (distances) or to test (≤ 0 means overlap).</summary>
     internal interface IKernel
     {

@@ -44,6 +44,27 @@ namespace ProximityLib.Batch
         }
     }
 
+    /// <summary>Segments as SoA float arrays of their endpoints.</summary>
+    public sealed class SegmentSet : ShapeSet
+    {
+        internal readonly float[] AX, AY, AZ, BX, BY, BZ;
+
+        /// <summary>A set holding the given segments.</summary>
+        public SegmentSet(ReadOnlySpan<Segment3> segments) : base(segments.Length)
+        {
+            AX = Lanes(Count); AY = Lanes(Count); AZ = Lanes(Count); BX = Lanes(Count); BY = Lanes(Count); BZ = Lanes(Count);
+            for (int i = 0; i < segments.Length; i++) Set(i, segments[i]);
+        }
+
+        /// <summary>Replaces segment i (already validated by its constructor).</summary>
+        public void Set(int i, Segment3 s)
+        {
+            var a = s.Start;
+            var b = s.End;
+            AX[i] = a.X; AY[i] = a.Y; AZ[i] = a.Z; BX[i] = b.X; BY[i] = b.Y; BZ[i] = b.Z;
+        }
+    }
+
     /// <summary>Spheres as SoA float arrays.</summary>
     public sealed class SphereSet : ShapeSet
     {

@@ -150,6 +150,49 @@ namespace ProximityTests.Batch
             CheckVerdicts(a, b, o);
         }
 
+        [TestCase(1000), TestCase(37)]
+        public void SegmentSegment(int n)
+        {
+            var (a, b) = Shapes("segment–segment", n, n + 5);
+            var sa = new SegmentSet(a.Cast<F.Segment3>().ToArray());
+            var sb = new SegmentSet(b.Cast<F.Segment3>().ToArray());
+            var d = new float[n];
+            BatchQuery.Distances(sa, sb, d);
+            CheckDistances(a, b, d);
+            var one = new float[n];
+            BatchQuery.Distances((F.Segment3)a[2], sb, one);
+            var repeated = new float[n];
+            BatchQuery.Distances(new SegmentSet(Enumerable.Repeat((F.Segment3)a[2], n).ToArray()), sb, repeated);
+            Assert.That(one, Is.EqualTo(repeated));
+        }
+
+        [Test]
+        public void NearlyParallelSegmentsStayWithinTheBound()
+        {
+            var cases = Families.Get("nearly-parallel", 2, 3).Where(c => c.A is D.Segment3).ToArray();
+            var a = cases.Select(c => ProximityReference.Shapes.ToFloat(c.A)).ToArray();
+            var b = cases.Select(c => ProximityReference.Shapes.ToFloat(c.B)).ToArray();
+            var d = new float[a.Length];
+            BatchQuery.Distances(new SegmentSet(a.Cast<F.Segment3>().ToArray()), new SegmentSet(b.Cast<F.Segment3>().ToArray()), d);
+            CheckDistances(a, b, d);
+        }
+
+        [TestCase(1000), TestCase(37)]
+        public void ObbObb(int n)
+        {
+            var (a, b) = Shapes("obb–obb", n, n + 6);
+            var sa = new ObbSet(a.Cast<F.Obb3>().ToArray());
+            var sb = new ObbSet(b.Cast<F.Obb3>().ToArray());
+            var o = new bool[n];
+            BatchQuery.Overlaps(sa, sb, o);
+            CheckVerdicts(a, b, o);
+            var one = new bool[n];
+            BatchQuery.Overlaps((F.Obb3)a[4], sb, one);
+            var repeated = new bool[n];
+            BatchQuery.Overlaps(new ObbSet(Enumerable.Repeat((F.Obb3)a[4], n).ToArray()), sb, repeated);
+            Assert.That(one, Is.EqualTo(repeated));
+        }
+
         [Test]
         public void MismatchedSetsAndShortResultsAreRejected()
         {
