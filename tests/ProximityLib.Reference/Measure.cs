@@ -50,6 +50,9 @@ namespace ProximityReference
         /// <summary>Booleans may answer either way when the exact signed distance is within this many u·S of zero.</summary>
         public const double Band = 32;
 
+        /// <summary>The batch queries' safe range for the configuration's scale S: 2^±28.</summary>
+        public const double BatchMinScale = 1.0 / (1 << 28), BatchMaxScale = 1 << 28;
+
         /// <summary>The promised bound on E for a pair: 4 for point–AABB, point–segment and pairs with a circle/sphere, else 32.</summary>
         public static double Bound(string pairKey) =>
             pairKey.Contains("sphere") || pairKey.Contains("circle") || pairKey.EndsWith("point–AABB") || pairKey.EndsWith("point–segment") ? 4 : 32;
@@ -98,7 +101,9 @@ namespace ProximityReference
                     floatMeasured = true;
                     ef = Exact.Error(df, fexact, UFloat, fscale);
                     bool fo = ProximityLib.ProximityQuery.Overlaps((dynamic)fa, (dynamic)fb);
-                    float? db = Batch(fa, fb) ?? Batch(fb, fa);
+                    // The batch runs in float lanes: inside its documented safe range only (squares, and for segments
+                    // fourth powers, of the configuration's size must stay normal floats).
+                    float? db = fscale >= BatchMinScale && fscale <= BatchMaxScale ? Batch(fa, fb) ?? Batch(fb, fa) : null;
                     if (db.HasValue) eb = Exact.Error(db.Value, fexact, UFloat, fscale);
                     wrongF = Math.Abs(fexact.ToDouble()) > Band * UFloat * fscale && fo != (fexact.Sign <= 0);
                 }

@@ -8,7 +8,8 @@ namespace ProximityLib.Batch
     /// SIMD batch queries over <see cref="ShapeSet"/>s, one against many or paired (many against many, lane by lane),
     /// with no allocation. Results are the scalar queries' signed distances (gap apart, 0 touching, −depth overlapping)
     /// or touch-or-overlap verdicts, computed in float across <see cref="Vector{T}"/> lanes; witness points are the scalar
-    /// API's job. Error bounds are measured in docs/accuracy.md-style tests against the double queries.
+    /// API's job. The lanes compute in float: the error bound (E ≤ 8, measured in docs/accuracy.md) holds for
+    /// configurations whose size lies within 2^±28, where squares and (segment–segment) fourth powers stay normal floats.
     /// </summary>
     public static class BatchQuery
     {
