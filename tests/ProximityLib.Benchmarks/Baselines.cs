@@ -46,6 +46,9 @@ namespace ProximityBenchmarks
             var (ss, sbox) = Inputs.Typed<F.Sphere, F.Aabb3>("3D sphere–AABB", Distribution, true);
             _sc = ss.Select(x => x.Center).ToArray(); _sr = ss.Select(x => x.Radius).ToArray();
             _sMin = sbox.Select(x => x.Min).ToArray(); _sMax = sbox.Select(x => x.Max).ToArray();
+            TierUp.Run(() => PaperPointSegment(), () => PaperSegmentSegment(), () => PaperSegmentSegment2(), () => PaperObbObb(),
+                () => OneLinerSphereSphere(), () => OneLinerSphereSphereOverlap(), () => OneLinerPointAabb(), () => PaperAabbAabb(),
+                () => PaperSphereAabb());
         }
 
         private (Vector3[] Min, Vector3[] Max) _boxA;

@@ -40,6 +40,8 @@ namespace ProximityBenchmarks
             _segA = new SegmentSet(sg1); _segB = new SegmentSet(sg2);
             var (o1, o2) = Inputs.Typed<F.Obb3, F.Obb3>("3D OBB–OBB", Distribution, true);
             _obbsA = new ObbSet(o1); _obbsB = new ObbSet(o2);
+            TierUp.Run(() => SphereSphere(), () => PointAabb(), () => SphereAabb(), () => AabbAabb(), () => SphereObb(),
+                () => SegmentSegment(), () => ObbObb());
         }
 
         [Benchmark(OperationsPerInvoke = Inputs.Count, Description = "3D sphere–sphere distance | ours, batch")]

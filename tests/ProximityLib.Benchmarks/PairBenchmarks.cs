@@ -84,7 +84,11 @@ namespace ProximityBenchmarks
         public static string[] DistributionNames => Inputs.Distributions;
 
         [GlobalSetup]
-        public void Setup() => (_a, _b) = Inputs.Typed<TA, TB>(TPair.Query, Distribution, TPair.IsFloat);
+        public void Setup()
+        {
+            (_a, _b) = Inputs.Typed<TA, TB>(TPair.Query, Distribution, TPair.IsFloat);
+            TierUp.Run(() => Distance(), () => Overlaps());
+        }
 
         [Benchmark(OperationsPerInvoke = Inputs.Count)]
         public double Distance()

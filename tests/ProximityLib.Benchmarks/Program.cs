@@ -23,8 +23,8 @@ var rest = args.Where((a, i) => a != "--quick" && (reportAt < 0 || (i != reportA
 // between methods in one run are what the report is about.
 var job = quick
     ? Job.Dry.WithToolchain(InProcessNoEmitToolchain.Instance)
-    : Job.Default.WithEvaluateOverhead(false).WithIterationTime(Perfolizer.Horology.TimeInterval.FromMilliseconds(25))
-        .WithWarmupCount(3).WithIterationCount(5).WithToolchain(InProcessNoEmitToolchain.Instance).WithId("InProcess-5x25ms");
+    : Job.Default.WithEvaluateOverhead(false).WithIterationTime(Perfolizer.Horology.TimeInterval.FromMilliseconds(50))
+        .WithWarmupCount(3).WithIterationCount(5).WithToolchain(InProcessNoEmitToolchain.Instance).WithId("InProcess-tiered-5x50ms");
 var config = ManualConfig.Create(DefaultConfig.Instance).AddJob(job).WithOptions(ConfigOptions.DisableLogFile);
 
 var pairTypes = typeof(PairBenchmarks<,,>).GetCustomAttributes(typeof(BenchmarkDotNet.Attributes.GenericTypeArgumentsAttribute), false)

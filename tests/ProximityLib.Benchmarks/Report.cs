@@ -24,7 +24,7 @@ namespace ProximityBenchmarks
                     var bc = r.BenchmarkCase;
                     string dist = (string)bc.Parameters["Distribution"];
                     double bytes = r.GcStats.GetBytesAllocatedPerOperation(bc) ?? 0;
-                    double ns = r.ResultStatistics!.Mean;
+                    double ns = r.ResultStatistics!.Median;
                     var type = bc.Descriptor.Type;
                     if (type.IsGenericType)
                     {
@@ -51,7 +51,7 @@ namespace ProximityBenchmarks
             md.AppendLine();
             md.AppendLine($"- Machine: {Environment.ProcessorCount} logical cores, {Cpu()}; {RuntimeInformation.OSDescription.Trim()}.");
             md.AppendLine($"- Runtime: {RuntimeInformation.FrameworkDescription}, {RuntimeInformation.ProcessArchitecture}; BenchmarkDotNet job {job}, one thread.");
-            md.AppendLine("- Each figure is the mean time of one query over 1024 prepared input pairs (three distributions: all apart,");
+            md.AppendLine("- Each figure is the median over iterations of the time of one query over 1024 prepared input pairs (three distributions: all apart,");
             md.AppendLine("  all overlapping, half and half shuffled). Allocation is per query.");
             md.AppendLine("- Max E is the largest error measured by the accuracy run ([accuracy.md](accuracy.md)), in units of the method's own");
             md.AppendLine("  precision (u = 2⁻²⁴ float, 2⁻⁵³ double); the plot puts every method on one axis as relative error E·u.");
