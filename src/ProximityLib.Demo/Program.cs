@@ -1,12 +1,30 @@
 using System;
 using System.Globalization;
+using System.Linq;
 using System.Numerics;
 using ProximityLib;
+using ProximityLib.Scenes.Picker;
 
-// A first look at the library: a few closest-distance and proximity queries, printed.
-// (The foot–ground gait simulation will become this project's main job.)
+// The project's sample program. With no arguments it prints a handful of queries; `picker` evaluates two shapes
+// given on the command line, as the paper's primitive picker does. (The foot–ground gait simulation will become the
+// default job.)
 CultureInfo.DefaultThreadCurrentCulture = CultureInfo.InvariantCulture;
 CultureInfo.CurrentCulture = CultureInfo.InvariantCulture;
+
+if (args.Length > 0 && (args[0] == "--help" || args[0] == "-h"))
+{
+    Console.WriteLine("usage: ProximityLib.Demo                         print a few sample queries");
+    Console.WriteLine("       ProximityLib.Demo picker [--proximity] A B  closest distance (or overlap verdict) of two shapes");
+    Console.WriteLine("shapes: point:x,y[,z]  segment:x1,y1[,z1],x2,y2[,z2]  circle:x,y,r  sphere:x,y,z,r");
+    Console.WriteLine("        aabb:minX,minY[,minZ],maxX,maxY[,maxZ]  obb:cx,cy,angle,hx,hy  obb:cx,cy,cz,qx,qy,qz,qw,hx,hy,hz");
+    return 0;
+}
+if (args.Length > 0 && args[0] == "picker") return Picker(args.Skip(1).ToArray());
+if (args.Length > 0)
+{
+    Console.Error.WriteLine($"error: unknown command '{args[0]}' (try --help)");
+    return 2;
+}
 
 var heel = new Sphere(new Vector3(0, 0.05f, 0), 0.04f);
 var ground = new Aabb3(new Vector3(-1, -0.1f, -1), new Vector3(1, 0, 1));
@@ -28,6 +46,46 @@ var box2 = new Obb2(new Vector2(5, 0.5f), MathF.PI / 4, new Vector2(1, 0.5f));
 var disc = new Circle(new Vector2(3.5f, 0.5f), 0.5f);
 var r3 = ClosestDistance.Between(disc, box2);
 Console.WriteLine($"2D circle – OBB: distance {r3.Distance:0.######} between {r3.PointA} and {r3.PointB}, overlaps: {ProximityQuery.Overlaps(disc, box2)}");
+return 0;
 
 static void Print(string name, DistanceResult3 r, bool overlaps) =>
     Console.WriteLine($"{name}: distance {r.Distance,10:0.######}  A {r.PointA}  B {r.PointB}  overlaps: {overlaps}");
+
+static int Picker(string[] args)
+{
+    bool proximity = args.Contains("--proximity");
+    var specs = args.Where(a => a != "--proximity").ToArray();
+    if (specs.Length != 2)
+    {
+        Console.Error.WriteLine("error: picker needs two shapes, e.g. picker sphere:0,0,0,1 aabb:2,0,0,3,1,1");
+        return 2;
+    }
+    object first, second;
+    try
+    {
+        first = ShapeSpec.Parse(specs[0]);
+        second = ShapeSpec.Parse(specs[1]);
+    }
+    catch (FormatException e)
+    {
+        Console.Error.WriteLine($"error: {e.Message}");
+        return 2;
+    }
+    if (ShapeSpec.Dimension(first) != ShapeSpec.Dimension(second))
+    {
+        Console.Error.WriteLine($"error: '{specs[0]}' is {ShapeSpec.Dimension(first)}D and '{specs[1]}' is {ShapeSpec.Dimension(second)}D: pick two shapes of the same dimension");
+        return 2;
+    }
+    bool overlaps = ProximityQuery.Overlaps((dynamic)first, (dynamic)second);
+    if (proximity)
+    {
+        Console.WriteLine(overlaps ? "Colliding" : "Not colliding");
+        return 0;
+    }
+    dynamic r = ClosestDistance.Between((dynamic)first, (dynamic)second);
+    Console.WriteLine($"Minimum distance: {(float)r.Distance:0.######}");
+    Console.WriteLine($"closest point on A: {r.PointA}");
+    Console.WriteLine($"closest point on B: {r.PointB}");
+    Console.WriteLine(overlaps ? "Colliding" : "Not colliding");
+    return 0;
+}

@@ -30,7 +30,7 @@ namespace ProximityLib.Double
                 return Residual(d0, d1, w, s, t);
             }
 
-            double k = PowerOfTwoScale(Math.Max(MaxAbs(d0), Math.Max(MaxAbs(d1), MaxAbs(w))));
+            double k = InverseSizeScale(a + e + w.LengthSquared);
             var d0k = d0 * k;
             var d1k = d1 * k;
             var wk = w * k;
@@ -57,8 +57,17 @@ namespace ProximityLib.Double
                 return Residual(d0, d1, w, s, t);
             }
 
-            // Nearly parallel: the clamped sequence would start from a noisy s, so take the best of the interior point and
-            // the four endpoint–segment candidates; each is a pair of real points, so a noisy one can only lose.
+            return NearlyParallel(a0, a1, b0, b1, lineGap, si, ti, out s, out t);
+        }
+
+        /// <summary>
+        /// Nearly parallel: the clamped sequence would start from a noisy s, so take the best of the interior point and
+        /// the four endpoint–segment candidates; each is a pair of real points, so a noisy one can only lose. Kept out of
+        /// line so the common path stays small enough for the JIT to inline everything in it.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static double NearlyParallel(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, double lineGap, double si, double ti, out double s, out double t)
+        {
             double best = lineGap;
             s = si; t = ti;
             double r2 = PointSegmentResidual(a0, b0, b1, out double tc).LengthSquared;
@@ -83,15 +92,16 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
-        /// A power of two bringing m ≥ 0 into [1, 2) (into [2^-52, 1) for subnormal m, and [2, 4) at the very top):
-        /// 2^(1023 − E) built from m's biased exponent E. Math.ScaleB/ILogB are not in netstandard2.1.
+        /// A power of two k with k²·size² in [1, 4): from the exponent of the squared size (a sum of squared lengths, which
+        /// stays normal throughout the documented range) halved, so scaling by k is exact and cheap (no square root,
+        /// no Math.Max; Math.ScaleB/ILogB are not in netstandard2.1).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double PowerOfTwoScale(double m)
+        private static double InverseSizeScale(double size2)
         {
-            long biased = (BitConverter.DoubleToInt64Bits(m) >> 52) & 0x7FF;
-            long scaled = Math.Min(2045, Math.Max(1, 2046 - biased));
-            return BitConverter.Int64BitsToDouble(scaled << 52);
+            long exponent = ((BitConverter.DoubleToInt64Bits(size2) >> 52) & 0x7FF) - 1023;
+            long biased = Math.Min(2046, Math.Max(1, 1023 - (exponent >> 1)));
+            return BitConverter.Int64BitsToDouble(biased << 52);
         }
 
 
