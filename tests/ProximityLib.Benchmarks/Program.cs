@@ -37,7 +37,13 @@ var summaries = rest.Length > 0
     : all.Select(t => BenchmarkRunner.Run(t, config)).ToArray();
 
 int ran = summaries.Sum(s => s.Reports.Count(r => r.Success));
-int failed = summaries.Sum(s => s.Reports.Count(r => !r.Success)) + summaries.Sum(s => s.ValidationErrors.Count());
+// Non-critical validation messages (e.g. "assembly located in temp" for a clone under /tmp) do not stop a run.
+int failed = summaries.Sum(s => s.Reports.Count(r => !r.Success)) + summaries.Sum(s => s.ValidationErrors.Count(v => v.IsCritical));
+foreach (var s in summaries)
+{
+    foreach (var r in s.Reports.Where(r => !r.Success)) Console.WriteLine($"failed: {r.BenchmarkCase.DisplayInfo}");
+    foreach (var v in s.ValidationErrors.Where(v => v.IsCritical)) Console.WriteLine($"invalid: {v.Message}");
+}
 Console.WriteLine($"{ran} passed, {failed} failed (benchmarks executed)");
 if (reportDir != null && !quick) Report.Write(summaries, reportDir, job.DisplayInfo);
 return failed == 0 && ran > 0 ? 0 : 1;
