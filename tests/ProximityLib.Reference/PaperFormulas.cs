@@ -90,28 +90,33 @@ namespace ProximityReference
         /// </summary>
         public static bool ObbObbOverlaps(Obb3 a, Obb3 b)
         {
-            var ax = new[] { a.AxisX, a.AxisY, a.AxisZ };
-            var bx = new[] { b.AxisX, b.AxisY, b.AxisZ };
-            var ha = new[] { a.HalfExtents.X, a.HalfExtents.Y, a.HalfExtents.Z };
-            var hb = new[] { b.HalfExtents.X, b.HalfExtents.Y, b.HalfExtents.Z };
-            var R = new double[3, 3];
-            var AbsR = new double[3, 3];
-            for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 3; j++) { R[i, j] = Vector3D.Dot(ax[i], bx[j]); AbsR[i, j] = Math.Abs(R[i, j]); }
+            Vector3D a0 = a.AxisX, a1 = a.AxisY, a2 = a.AxisZ, b0 = b.AxisX, b1 = b.AxisY, b2 = b.AxisZ;
+            double ha0 = a.HalfExtents.X, ha1 = a.HalfExtents.Y, ha2 = a.HalfExtents.Z;
+            double hb0 = b.HalfExtents.X, hb1 = b.HalfExtents.Y, hb2 = b.HalfExtents.Z;
+            double r00 = Vector3D.Dot(a0, b0), r01 = Vector3D.Dot(a0, b1), r02 = Vector3D.Dot(a0, b2);
+            double r10 = Vector3D.Dot(a1, b0), r11 = Vector3D.Dot(a1, b1), r12 = Vector3D.Dot(a1, b2);
+            double r20 = Vector3D.Dot(a2, b0), r21 = Vector3D.Dot(a2, b1), r22 = Vector3D.Dot(a2, b2);
+            double q00 = Math.Abs(r00), q01 = Math.Abs(r01), q02 = Math.Abs(r02);
+            double q10 = Math.Abs(r10), q11 = Math.Abs(r11), q12 = Math.Abs(r12);
+            double q20 = Math.Abs(r20), q21 = Math.Abs(r21), q22 = Math.Abs(r22);
             var tw = b.Center - a.Center;
-            var t = new[] { Vector3D.Dot(tw, ax[0]), Vector3D.Dot(tw, ax[1]), Vector3D.Dot(tw, ax[2]) };
-            for (int i = 0; i < 3; i++)
-                if (Math.Abs(t[i]) > ha[i] + hb[0] * AbsR[i, 0] + hb[1] * AbsR[i, 1] + hb[2] * AbsR[i, 2]) return false;
-            for (int j = 0; j < 3; j++)
-                if (Math.Abs(t[0] * R[0, j] + t[1] * R[1, j] + t[2] * R[2, j]) > ha[0] * AbsR[0, j] + ha[1] * AbsR[1, j] + ha[2] * AbsR[2, j] + hb[j]) return false;
-            for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 3; j++)
-                {
-                    int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-                    double ra = ha[i1] * AbsR[i2, j] + ha[i2] * AbsR[i1, j];
-                    double rb = hb[j1] * AbsR[i, j2] + hb[j2] * AbsR[i, j1];
-                    if (Math.Abs(t[i2] * R[i1, j] - t[i1] * R[i2, j]) > ra + rb) return false;
-                }
+            double t0 = Vector3D.Dot(tw, a0), t1 = Vector3D.Dot(tw, a1), t2 = Vector3D.Dot(tw, a2);
+            if (Math.Abs(t0) > ha0 + hb0 * q00 + hb1 * q01 + hb2 * q02) return false;
+            if (Math.Abs(t1) > ha1 + hb0 * q10 + hb1 * q11 + hb2 * q12) return false;
+            if (Math.Abs(t2) > ha2 + hb0 * q20 + hb1 * q21 + hb2 * q22) return false;
+            if (Math.Abs(t0 * r00 + t1 * r10 + t2 * r20) > ha0 * q00 + ha1 * q10 + ha2 * q20 + hb0) return false;
+            if (Math.Abs(t0 * r01 + t1 * r11 + t2 * r21) > ha0 * q01 + ha1 * q11 + ha2 * q21 + hb1) return false;
+            if (Math.Abs(t0 * r02 + t1 * r12 + t2 * r22) > ha0 * q02 + ha1 * q12 + ha2 * q22 + hb2) return false;
+            // L = A_i × B_j with B's radius from the orthonormality identities and no ε (Ericson's form without its ε).
+            if (Math.Abs(t2 * r10 - t1 * r20) > ha1 * q20 + ha2 * q10 + hb1 * q02 + hb2 * q01) return false;
+            if (Math.Abs(t2 * r11 - t1 * r21) > ha1 * q21 + ha2 * q11 + hb0 * q02 + hb2 * q00) return false;
+            if (Math.Abs(t2 * r12 - t1 * r22) > ha1 * q22 + ha2 * q12 + hb0 * q01 + hb1 * q00) return false;
+            if (Math.Abs(t0 * r20 - t2 * r00) > ha0 * q20 + ha2 * q00 + hb1 * q12 + hb2 * q11) return false;
+            if (Math.Abs(t0 * r21 - t2 * r01) > ha0 * q21 + ha2 * q01 + hb0 * q12 + hb2 * q10) return false;
+            if (Math.Abs(t0 * r22 - t2 * r02) > ha0 * q22 + ha2 * q02 + hb0 * q11 + hb1 * q10) return false;
+            if (Math.Abs(t1 * r00 - t0 * r10) > ha0 * q10 + ha1 * q00 + hb1 * q22 + hb2 * q21) return false;
+            if (Math.Abs(t1 * r01 - t0 * r11) > ha0 * q11 + ha1 * q01 + hb0 * q22 + hb2 * q20) return false;
+            if (Math.Abs(t1 * r02 - t0 * r12) > ha0 * q12 + ha1 * q02 + hb0 * q21 + hb1 * q20) return false;
             return true;
         }
 
