@@ -65,6 +65,16 @@ namespace ProximityTests.Batch
             Assert.That(decided, Is.GreaterThan(a.Length / 2));
         }
 
+        /// <summary>One shape against a set gives what the paired query gives with that shape repeated.</summary>
+        private static void OneMatchesRepeated<TShape, TSet, TR>(TShape first, int n, Func<TShape[], TSet> set, Action<TShape, TR[]> one, Action<TSet, TR[]> paired)
+        {
+            var expected = new TR[n];
+            paired(set(Enumerable.Repeat(first, n).ToArray()), expected);
+            var actual = new TR[n];
+            one(first, actual);
+            Assert.That(actual, Is.EqualTo(expected));
+        }
+
         [TestCase(1000), TestCase(37), TestCase(1)]
         public void SphereSphere(int n)
         {
@@ -77,11 +87,7 @@ namespace ProximityTests.Batch
             BatchQuery.Overlaps(sa, sb, o);
             CheckDistances(a, b, d);
             CheckVerdicts(a, b, o);
-            var one = new float[n];
-            BatchQuery.Distances((F.Sphere)a[0], sb, one);
-            var repeated = new float[n];
-            BatchQuery.Distances(new SphereSet(Enumerable.Repeat((F.Sphere)a[0], n).ToArray()), sb, repeated);
-            Assert.That(one, Is.EqualTo(repeated));
+            OneMatchesRepeated<F.Sphere, SphereSet, float>((F.Sphere)a[0], n, x => new SphereSet(x), (x, r) => BatchQuery.Distances(x, sb, r), (x, r) => BatchQuery.Distances(x, sb, r));
         }
 
         [TestCase(1000), TestCase(37)]
@@ -96,11 +102,7 @@ namespace ProximityTests.Batch
             BatchQuery.Overlaps(pa, sb, o);
             CheckDistances(a, b, d);
             CheckVerdicts(a, b, o);
-            var one = new float[n];
-            BatchQuery.Distances((Vector3)a[3], sb, one);
-            var repeated = new float[n];
-            BatchQuery.Distances(new PointSet(Enumerable.Repeat((Vector3)a[3], n).ToArray()), sb, repeated);
-            Assert.That(one, Is.EqualTo(repeated));
+            OneMatchesRepeated<Vector3, PointSet, float>((Vector3)a[3], n, x => new PointSet(x), (x, r) => BatchQuery.Distances(x, sb, r), (x, r) => BatchQuery.Distances(x, sb, r));
         }
 
         [TestCase(1000), TestCase(37)]
@@ -115,11 +117,7 @@ namespace ProximityTests.Batch
             BatchQuery.Overlaps(sa, sb, o);
             CheckDistances(a, b, d);
             CheckVerdicts(a, b, o);
-            var one = new bool[n];
-            BatchQuery.Overlaps((F.Sphere)a[1], sb, one);
-            var repeated = new bool[n];
-            BatchQuery.Overlaps(new SphereSet(Enumerable.Repeat((F.Sphere)a[1], n).ToArray()), sb, repeated);
-            Assert.That(one, Is.EqualTo(repeated));
+            OneMatchesRepeated<F.Sphere, SphereSet, bool>((F.Sphere)a[1], n, x => new SphereSet(x), (x, r) => BatchQuery.Overlaps(x, sb, r), (x, r) => BatchQuery.Overlaps(x, sb, r));
         }
 
         [TestCase(1000), TestCase(37)]
@@ -159,11 +157,7 @@ namespace ProximityTests.Batch
             var d = new float[n];
             BatchQuery.Distances(sa, sb, d);
             CheckDistances(a, b, d);
-            var one = new float[n];
-            BatchQuery.Distances((F.Segment3)a[2], sb, one);
-            var repeated = new float[n];
-            BatchQuery.Distances(new SegmentSet(Enumerable.Repeat((F.Segment3)a[2], n).ToArray()), sb, repeated);
-            Assert.That(one, Is.EqualTo(repeated));
+            OneMatchesRepeated<F.Segment3, SegmentSet, float>((F.Segment3)a[2], n, x => new SegmentSet(x), (x, r) => BatchQuery.Distances(x, sb, r), (x, r) => BatchQuery.Distances(x, sb, r));
         }
 
         [Test]
@@ -186,11 +180,7 @@ namespace ProximityTests.Batch
             var o = new bool[n];
             BatchQuery.Overlaps(sa, sb, o);
             CheckVerdicts(a, b, o);
-            var one = new bool[n];
-            BatchQuery.Overlaps((F.Obb3)a[4], sb, one);
-            var repeated = new bool[n];
-            BatchQuery.Overlaps(new ObbSet(Enumerable.Repeat((F.Obb3)a[4], n).ToArray()), sb, repeated);
-            Assert.That(one, Is.EqualTo(repeated));
+            OneMatchesRepeated<F.Obb3, ObbSet, bool>((F.Obb3)a[4], n, x => new ObbSet(x), (x, r) => BatchQuery.Overlaps(x, sb, r), (x, r) => BatchQuery.Overlaps(x, sb, r));
         }
 
         [Test]
