@@ -41,8 +41,12 @@ namespace ProximityLib.Double
             bool interior = nn > 0 && si >= 0 && si <= 1 && ti >= 0 && ti <= 1;
             // The gap between the lines, (w·n)²/|n|², carries no error from (s, t), which nearly parallel segments
             // determine only loosely; crossing 2D segments give exactly 0.
-            double wn = Vector3D.Dot(wk, n);
-            double lineGap = interior ? wn * wn / nn / k / k : double.PositiveInfinity;
+            double lineGap = double.PositiveInfinity;
+            if (interior)
+            {
+                double wn = Vector3D.Dot(wk, n);
+                lineGap = wn * wn / nn / k / k;
+            }
 
             if (nn >= 1e-4 * d0k.LengthSquared * d1k.LengthSquared)
             {
