@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System.Numerics;
 using Dbl = ProximityLib.Double;
 
@@ -19,6 +20,7 @@ namespace ProximityLib
         /// <summary>When B is a segment, the parameter of PointB on it (0 = Start, 1 = End); otherwise 0.</summary>
         public readonly float ParameterB;
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal DistanceResult3(in Dbl.DistanceResult3 r)
         {
             Distance = (float)r.Distance; DistanceSquared = (float)r.DistanceSquared;
@@ -55,6 +57,7 @@ namespace ProximityLib
         /// <summary>When B is a segment, the parameter of PointB on it (0 = Start, 1 = End); otherwise 0.</summary>
         public readonly float ParameterB;
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal DistanceResult2(in Dbl.DistanceResult2 r)
         {
             Distance = (float)r.Distance; DistanceSquared = (float)r.DistanceSquared;

@@ -7,7 +7,7 @@ namespace ProximityLib
     {
         // Math.Clamp throws when lo > hi; queries must never throw, and callers guarantee lo <= hi anyway.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Clamp(double x, double lo, double hi) => x < lo ? lo : (x > hi ? hi : x);
+        public static double Clamp(double x, double lo, double hi) => Math.Min(Math.Max(x, lo), hi);
 
         public static void Finite(double value, string name)
         {

@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 namespace ProximityLib.Double
 {
     /// <summary>
@@ -22,6 +23,7 @@ namespace ProximityLib.Double
         /// <summary>When B is a segment, the parameter of PointB on it (0 = Start, 1 = End); otherwise 0.</summary>
         public readonly double ParameterB;
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal DistanceResult3(double distance, double distanceSquared, Vector3D pointA, Vector3D pointB, double parameterA, double parameterB)
         {
             Distance = distance; DistanceSquared = distanceSquared; PointA = pointA; PointB = pointB;
@@ -33,6 +35,7 @@ namespace ProximityLib.Double
 
         internal DistanceResult3 Swapped() => new DistanceResult3(Distance, DistanceSquared, PointB, PointA, ParameterB, ParameterA);
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal DistanceResult2 To2() =>
             new DistanceResult2(Distance, DistanceSquared, Vector2D.From3(PointA), Vector2D.From3(PointB), ParameterA, ParameterB);
     }
@@ -53,6 +56,7 @@ namespace ProximityLib.Double
         /// <summary>When B is a segment, the parameter of PointB on it (0 = Start, 1 = End); otherwise 0.</summary>
         public readonly double ParameterB;
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal DistanceResult2(double distance, double distanceSquared, Vector2D pointA, Vector2D pointB, double parameterA, double parameterB)
         {
             Distance = distance; DistanceSquared = distanceSquared; PointA = pointA; PointB = pointB;

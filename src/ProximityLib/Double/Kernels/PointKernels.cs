@@ -16,9 +16,11 @@ namespace ProximityLib.Double
         }
 
         /// <summary>The point's result against the shape, as the pair (point, shape).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public DistanceResult3 AsPointFirst(Vector3D p) => new DistanceResult3(Distance, DistanceSquared, p, Closest, 0, Parameter);
 
         /// <summary>A sphere of the given radius centred at the query point: the same witness on the shape, distance less the radius.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public DistanceResult3 AsSphereFirst(Vector3D center, double radius)
         {
             double d = Distance - radius;
@@ -66,12 +68,13 @@ namespace ProximityLib.Double
             return len > 0 ? n / len : Vector3D.UnitX;
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static PointContact PointSphere(Vector3D p, Vector3D center, double radius)
         {
             var r = p - center;
             double len = r.Length;
             // Coincident centres have no preferred direction: +X is documented and keeps the 2D API planar.
-            var n = len > 0 ? r / len : Vector3D.UnitX;
+            var n = len > 0 ? r * (1 / len) : Vector3D.UnitX;
             double d = len - radius;
             return new PointContact(d, d > 0 ? d * d : 0, center + n * radius, n, 0);
         }
@@ -92,7 +95,7 @@ namespace ProximityLib.Double
                 var diff = (p - box.Origin) - offset;
                 double d2 = diff.LengthSquared;
                 double d = Math.Sqrt(d2);
-                var normal = d > 0 ? diff / d : box.ToWorldOffset(Unit(q - c));
+                var normal = d > 0 ? diff * (1 / d) : box.ToWorldOffset(Unit(q - c));
                 return new PointContact(d, d2, box.Origin + offset, normal, 0);
             }
 
