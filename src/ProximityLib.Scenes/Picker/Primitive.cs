@@ -86,19 +86,21 @@ namespace ProximityLib.Scenes.Picker
             _ => (object)Obb3(),
         };
 
+        /// <summary>Half-extents of the box kinds before rotation: 1 × 0.5 × 0.75 times Scale (z = 0 in 2D). The segment's half-length and the radius are Scale.</summary>
+        public Vector3 HalfExtents => new Vector3(1, 0.5f, Dimension == 3 ? 0.75f : 0) * Scale;
+
         // Typed shapes for the dispatch table (no boxing).
         private Vector3 Axis => Vector3.Transform(Vector3.UnitX, Rotation) * Scale;
-        private Vector3 Half => new Vector3(1, 0.5f, Dimension == 3 ? 0.75f : 0) * Scale;
         internal Vector3 P3() => Position;
         internal Segment3 Seg3() => new Segment3(Position - Axis, Position + Axis);
         internal Sphere Rnd3() => new Sphere(Position, Scale);
-        internal Aabb3 Box3() => Aabb3.FromCenter(Position, Half);
-        internal Obb3 Obb3() => new Obb3(Position, Rotation, Half);
+        internal Aabb3 Box3() => Aabb3.FromCenter(Position, HalfExtents);
+        internal Obb3 Obb3() => new Obb3(Position, Rotation, HalfExtents);
         internal Vector2 P2() => new Vector2(Position.X, Position.Y);
         internal Segment2 Seg2() { var a = Axis; return new Segment2(P2() - new Vector2(a.X, a.Y), P2() + new Vector2(a.X, a.Y)); }
         internal Circle Rnd2() => new Circle(P2(), Scale);
-        internal Aabb2 Box2() => Aabb2.FromCenter(P2(), new Vector2(Half.X, Half.Y));
-        internal Obb2 Obb2() => new Obb2(P2(), Yaw, new Vector2(Half.X, Half.Y));
+        internal Aabb2 Box2() => Aabb2.FromCenter(P2(), new Vector2(HalfExtents.X, HalfExtents.Y));
+        internal Obb2 Obb2() => new Obb2(P2(), Yaw, new Vector2(HalfExtents.X, HalfExtents.Y));
 
         internal static string KindName(PrimitiveKind kind, int dimension) => kind switch
         {

@@ -74,6 +74,19 @@ namespace ProximityTests.Scenes
         }
 
         [Test]
+        public void HalfExtentsAreTheBoxesTheQueriesUse()
+        {
+            // The Unity picker draws boxes from HalfExtents; they must be the boxes the queries see.
+            var obb = new Primitive(PrimitiveKind.Obb, 3, new Vector3(1, 2, 3), 0.3f, 0.2f, 2);
+            Assert.That(obb.HalfExtents, Is.EqualTo(new Vector3(2, 1, 1.5f)));
+            Assert.That(((ProximityLib.Obb3)obb.Shape).HalfExtents, Is.EqualTo(obb.HalfExtents));
+            var aabb = new Primitive(PrimitiveKind.Aabb, 2, new Vector3(1, 2, 0), 0.3f, 0, 0.5f);
+            Assert.That(aabb.HalfExtents, Is.EqualTo(new Vector3(0.5f, 0.25f, 0)));
+            var box2 = (ProximityLib.Aabb2)aabb.Shape;
+            Assert.That((box2.Max - box2.Min) / 2, Is.EqualTo(new Vector2(aabb.HalfExtents.X, aabb.HalfExtents.Y)));
+        }
+
+        [Test]
         public void AFrameAllocatesNothing()
         {
             var scene = new PickerScene(PickerMode.ClosestDistance,

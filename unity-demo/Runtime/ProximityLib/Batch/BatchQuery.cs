@@ -1,0 +1,300 @@
+// Copied from src/ProximityLib/Batch/BatchQuery.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System;
+using System.Numerics;
+using System.Runtime.CompilerServices;
+
+namespace ProximityLib.Batch
+{
+    /// <summary>
+    /// SIMD batch queries over <see cref="ShapeSet"/>s, one against many or paired (many against many, lane by lane),
+    /// with no allocation. Results are the scalar queries' signed distances (gap apart, 0 touching, −depth overlapping)
+    /// or touch-or-overlap verdicts, computed in float across <see cref="Vector{T}"/> lanes; witness points are the scalar
+    /// API's job. The lanes compute in float: the error bound (E ≤ 8, measured in docs/accuracy.md) holds for
+    /// configurations whose size lies within 2^±28, where squares and (segment–segment) fourth powers stay normal floats.
+    /// </summary>
+    public static class BatchQuery
+    {
+        /// <summary>Signed distances between spheres a[i] and b[i].</summary>
+        public static void Distances(SphereSet a, SphereSet b, Span<float> result) =>
+            Runner.Values(new SphereSphere<SphereLanes>(new SphereLanes(a), Paired(a, b), false), b.Count, result);
+
+        /// <summary>Signed distances between sphere a and every sphere of b.</summary>
+        public static void Distances(Sphere a, SphereSet b, Span<float> result) =>
+            Runner.Values(new SphereSphere<SphereBroadcast>(new SphereBroadcast(a.Center, a.Radius), b, false), b.Count, result);
+
+        /// <summary>Whether spheres a[i] and b[i] touch or overlap.</summary>
+        public static void Overlaps(SphereSet a, SphereSet b, Span<bool> result) =>
+            Runner.NonPositive(new SphereSphere<SphereLanes>(new SphereLanes(a), Paired(a, b), true), b.Count, result);
+
+        /// <summary>Whether sphere a touches or overlaps each sphere of b.</summary>
+        public static void Overlaps(Sphere a, SphereSet b, Span<bool> result) =>
+            Runner.NonPositive(new SphereSphere<SphereBroadcast>(new SphereBroadcast(a.Center, a.Radius), b, true), b.Count, result);
+
+        /// <summary>Signed distances between points a[i] and boxes b[i] (negative inside).</summary>
+        public static void Distances(PointSet a, AabbSet b, Span<float> result) =>
+            Runner.Values(new SphereAabb<PointLanes>(new PointLanes(a), Paired(a, b), false), b.Count, result);
+
+        /// <summary>Signed distances between point a and every box of b (negative inside).</summary>
+        public static void Distances(Vector3 a, AabbSet b, Span<float> result) =>
+            Runner.Values(new SphereAabb<SphereBroadcast>(new SphereBroadcast(a, 0), b, false), b.Count, result);
+
+        /// <summary>Whether points a[i] lie in boxes b[i].</summary>
+        public static void Overlaps(PointSet a, AabbSet b, Span<bool> result) =>
+            Runner.NonPositive(new SphereAabb<PointLanes>(new PointLanes(a), Paired(a, b), true), b.Count, result);
+
+        /// <summary>Whether point a lies in each box of b.</summary>
+        public static void Overlaps(Vector3 a, AabbSet b, Span<bool> result) =>
+            Runner.NonPositive(new SphereAabb<SphereBroadcast>(new SphereBroadcast(a, 0), b, true), b.Count, result);
+
+        /// <summary>Signed distances between spheres a[i] and boxes b[i].</summary>
+        public static void Distances(SphereSet a, AabbSet b, Span<float> result) =>
+            Runner.Values(new SphereAabb<SphereLanes>(new SphereLanes(a), Paired(a, b), false), b.Count, result);
+
+        /// <summary>Signed distances between sphere a and every box of b.</summary>
+        public static void Distances(Sphere a, AabbSet b, Span<float> result) =>
+            Runner.Values(new SphereAabb<SphereBroadcast>(new SphereBroadcast(a.Center, a.Radius), b, false), b.Count, result);
+
+        /// <summary>Whether spheres a[i] and boxes b[i] touch or overlap.</summary>
+        public static void Overlaps(SphereSet a, AabbSet b, Span<bool> result) =>
+            Runner.NonPositive(new SphereAabb<SphereLanes>(new SphereLanes(a), Paired(a, b), true), b.Count, result);
+
+        /// <summary>Whether sphere a touches or overlaps each box of b.</summary>
+        public static void Overlaps(Sphere a, AabbSet b, Span<bool> result) =>
+            Runner.NonPositive(new SphereAabb<SphereBroadcast>(new SphereBroadcast(a.Center, a.Radius), b, true), b.Count, result);
+
+        /// <summary>Whether boxes a[i] and b[i] touch or overlap.</summary>
+        public static void Overlaps(AabbSet a, AabbSet b, Span<bool> result) =>
+            Runner.NonPositive(new AabbAabb<AabbLanes>(new AabbLanes(a), Paired(a, b)), b.Count, result);
+
+        /// <summary>Whether box a touches or overlaps each box of b.</summary>
+        public static void Overlaps(Aabb3 a, AabbSet b, Span<bool> result) =>
+            Runner.NonPositive(new AabbAabb<AabbBroadcast>(new AabbBroadcast(a.Min, a.Max), b), b.Count, result);
+
+        /// <summary>Signed distances between spheres a[i] and oriented boxes b[i].</summary>
+        public static void Distances(SphereSet a, ObbSet b, Span<float> result) =>
+            Runner.Values(new SphereObb<SphereLanes>(new SphereLanes(a), Paired(a, b), false), b.Count, result);
+
+        /// <summary>Signed distances between sphere a and every oriented box of b.</summary>
+        public static void Distances(Sphere a, ObbSet b, Span<float> result) =>
+            Runner.Values(new SphereObb<SphereBroadcast>(new SphereBroadcast(a.Center, a.Radius), b, false), b.Count, result);
+
+        /// <summary>Whether spheres a[i] and oriented boxes b[i] touch or overlap.</summary>
+        public static void Overlaps(SphereSet a, ObbSet b, Span<bool> result) =>
+            Runner.NonPositive(new SphereObb<SphereLanes>(new SphereLanes(a), Paired(a, b), true), b.Count, result);
+
+        /// <summary>Whether sphere a touches or overlaps each oriented box of b.</summary>
+        public static void Overlaps(Sphere a, ObbSet b, Span<bool> result) =>
+            Runner.NonPositive(new SphereObb<SphereBroadcast>(new SphereBroadcast(a.Center, a.Radius), b, true), b.Count, result);
+
+        /// <summary>Distances between segments a[i] and b[i].</summary>
+        public static void Distances(SegmentSet a, SegmentSet b, Span<float> result) =>
+            Runner.Values(new SegmentSegment<SegmentLanes>(new SegmentLanes(a), Paired(a, b)), b.Count, result);
+
+        /// <summary>Distances between segment a and every segment of b.</summary>
+        public static void Distances(Segment3 a, SegmentSet b, Span<float> result) =>
+            Runner.Values(new SegmentSegment<SegmentBroadcast>(new SegmentBroadcast(a.Start, a.End), b), b.Count, result);
+
+        /// <summary>Whether oriented boxes a[i] and b[i] touch or overlap (15-axis SAT).</summary>
+        public static void Overlaps(ObbSet a, ObbSet b, Span<bool> result) =>
+            Runner.NonPositive(new ObbObb<ObbLanes>(new ObbLanes(a), Paired(a, b)), b.Count, result);
+
+        /// <summary>Whether oriented box a touches or overlaps each box of b (15-axis SAT).</summary>
+        public static void Overlaps(Obb3 a, ObbSet b, Span<bool> result) =>
+            Runner.NonPositive(new ObbObb<ObbBroadcast>(new ObbBroadcast(a), b), b.Count, result);
+
+        private static TB Paired<TB>(ShapeSet a, TB b) where TB : ShapeSet =>
+            a.Count == b.Count ? b : throw new ArgumentException($"paired queries need sets of equal size ({a.Count} and {b.Count}).", nameof(b));
+
+        /// <summary>
+        /// Signed distance from points to boxes [lo, hi], per lane: the clamped gap outside, minus the nearest face's
+        /// depth inside; or, for a margin, the squared gap less r² (≤ 0 exactly when a sphere of radius r meets the box).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector<float> PointBox(Vector<float> px, Vector<float> py, Vector<float> pz, Vector<float> r,
+            Vector<float> lox, Vector<float> loy, Vector<float> loz, Vector<float> hix, Vector<float> hiy, Vector<float> hiz, bool margin)
+        {
+            var dx = px - Runner.Clamp(px, lox, hix);
+            var dy = py - Runner.Clamp(py, loy, hiy);
+            var dz = pz - Runner.Clamp(pz, loz, hiz);
+            var d2 = dx * dx + dy * dy + dz * dz;
+            if (margin) return d2 - r * r;
+            var depth = Vector.Min(Vector.Min(Vector.Min(px - lox, hix - px), Vector.Min(py - loy, hiy - py)), Vector.Min(pz - loz, hiz - pz));
+            return Vector.ConditionalSelect(Vector.GreaterThan(d2, Vector<float>.Zero), Vector.SquareRoot(d2), -depth) - r;
+        }
+
+        private readonly struct SphereSphere<TS> : IKernel where TS : struct, ISpheres
+        {
+            private readonly TS _a;
+            private readonly SphereSet _b;
+            private readonly bool _margin;
+            public SphereSphere(TS a, SphereSet b, bool margin) { _a = a; _b = b; _margin = margin; }
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public Vector<float> Compute(int i)
+            {
+                var dx = _a.X(i) - new Vector<float>(_b.X, i);
+                var dy = _a.Y(i) - new Vector<float>(_b.Y, i);
+                var dz = _a.Z(i) - new Vector<float>(_b.Z, i);
+                var d2 = dx * dx + dy * dy + dz * dz;
+                var r = _a.R(i) + new Vector<float>(_b.R, i);
+                return _margin ? d2 - r * r : Vector.SquareRoot(d2) - r;
+            }
+        }
+
+        private readonly struct SphereAabb<TS> : IKernel where TS : struct, ISpheres
+        {
+            private readonly TS _a;
+            private readonly AabbSet _b;
+            private readonly bool _margin;
+            public SphereAabb(TS a, AabbSet b, bool margin) { _a = a; _b = b; _margin = margin; }
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public Vector<float> Compute(int i) => PointBox(_a.X(i), _a.Y(i), _a.Z(i), _a.R(i),
+                new Vector<float>(_b.MinX, i), new Vector<float>(_b.MinY, i), new Vector<float>(_b.MinZ, i),
+                new Vector<float>(_b.MaxX, i), new Vector<float>(_b.MaxY, i), new Vector<float>(_b.MaxZ, i), _margin);
+        }
+
+        private readonly struct SphereObb<TS> : IKernel where TS : struct, ISpheres
+        {
+            private readonly TS _a;
+            private readonly ObbSet _b;
+            private readonly bool _margin;
+            public SphereObb(TS a, ObbSet b, bool margin) { _a = a; _b = b; _margin = margin; }
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public Vector<float> Compute(int i)
+            {
+                // The center in the box frame (subtract first), then the AABB kernel on [−h, h].
+                var wx = _a.X(i) - new Vector<float>(_b.CX, i);
+                var wy = _a.Y(i) - new Vector<float>(_b.CY, i);
+                var wz = _a.Z(i) - new Vector<float>(_b.CZ, i);
+                var qx = wx * new Vector<float>(_b.XX, i) + wy * new Vector<float>(_b.XY, i) + wz * new Vector<float>(_b.XZ, i);
+                var qy = wx * new Vector<float>(_b.YX, i) + wy * new Vector<float>(_b.YY, i) + wz * new Vector<float>(_b.YZ, i);
+                var qz = wx * new Vector<float>(_b.ZX, i) + wy * new Vector<float>(_b.ZY, i) + wz * new Vector<float>(_b.ZZ, i);
+                var hx = new Vector<float>(_b.HX, i);
+                var hy = new Vector<float>(_b.HY, i);
+                var hz = new Vector<float>(_b.HZ, i);
+                return PointBox(qx, qy, qz, _a.R(i), -hx, -hy, -hz, hx, hy, hz, _margin);
+            }
+        }
+
+        /// <summary>
+        /// Segment–segment without branches: the best of five candidate pairs, every one a pair of real points, so a
+        /// noisy candidate (nearly parallel segments) can only lose: the clamped stationary point of the lines (from the
+        /// Lagrange-identity determinant |d0 × d1|²) and each endpoint against the other segment.
+        /// </summary>
+        private readonly struct SegmentSegment<TA> : IKernel where TA : struct, ISegments
+        {
+            private readonly TA _a;
+            private readonly SegmentSet _b;
+            public SegmentSegment(TA a, SegmentSet b) { _a = a; _b = b; }
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public Vector<float> Compute(int i)
+            {
+                var a0 = new V3(_a.AX(i), _a.AY(i), _a.AZ(i));
+                var b0 = new V3(new Vector<float>(_b.AX, i), new Vector<float>(_b.AY, i), new Vector<float>(_b.AZ, i));
+                var d0 = new V3(_a.BX(i) - a0.X, _a.BY(i) - a0.Y, _a.BZ(i) - a0.Z);
+                var d1 = new V3(new Vector<float>(_b.BX, i) - b0.X, new Vector<float>(_b.BY, i) - b0.Y, new Vector<float>(_b.BZ, i) - b0.Z);
+                var w = new V3(b0.X - a0.X, b0.Y - a0.Y, b0.Z - a0.Z);
+                var zero = Vector<float>.Zero;
+                var one = Vector<float>.One;
+
+                var n = Cross(d0, d1);
+                var nn = V3.Dot(n, n);
+                var valid = Vector.GreaterThan(nn, zero);
+                var s = Vector.ConditionalSelect(valid, Runner.Clamp(V3.Dot(Cross(w, d1), n) / nn, zero, one), zero);
+                var t = Vector.ConditionalSelect(valid, Runner.Clamp(V3.Dot(Cross(w, d0), n) / nn, zero, one), zero);
+                var best = Residual2(d0.X * s - d1.X * t - w.X, d0.Y * s - d1.Y * t - w.Y, d0.Z * s - d1.Z * t - w.Z);
+
+                var dd0 = V3.Dot(d0, d0);
+                var dd1 = V3.Dot(d1, d1);
+                // a0 against segment b (offset a0 − b0 = −w), a1 against b (d0 − w), b0 against a (w), b1 against a (w + d1).
+                best = Vector.Min(best, PointSegment2(-w.X, -w.Y, -w.Z, d1, dd1));
+                best = Vector.Min(best, PointSegment2(d0.X - w.X, d0.Y - w.Y, d0.Z - w.Z, d1, dd1));
+                best = Vector.Min(best, PointSegment2(w.X, w.Y, w.Z, d0, dd0));
+                best = Vector.Min(best, PointSegment2(w.X + d1.X, w.Y + d1.Y, w.Z + d1.Z, d0, dd0));
+                return Vector.SquareRoot(best);
+            }
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static V3 Cross(in V3 a, in V3 b) => new V3(a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X);
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static Vector<float> Residual2(Vector<float> x, Vector<float> y, Vector<float> z) => x * x + y * y + z * z;
+
+            /// <summary>Squared distance from a point at offset (px, py, pz) from a segment's start to the segment d.</summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static Vector<float> PointSegment2(Vector<float> px, Vector<float> py, Vector<float> pz, in V3 d, Vector<float> dd)
+            {
+                var t = Vector.ConditionalSelect(Vector.GreaterThan(dd, Vector<float>.Zero),
+                    Runner.Clamp((px * d.X + py * d.Y + pz * d.Z) / dd, Vector<float>.Zero, Vector<float>.One), Vector<float>.Zero);
+                return Residual2(px - d.X * t, py - d.Y * t, pz - d.Z * t);
+            }
+        }
+
+        /// <summary>
+        /// OBB–OBB separating-axis test without branches: the largest separation over the 15 axes (≤ 0 exactly when no
+        /// axis separates). Cross axes project B through the minors of R, as the scalar test does.
+        /// </summary>
+        private readonly struct ObbObb<TA> : IKernel where TA : struct, IObbs
+        {
+            private readonly TA _a;
+            private readonly ObbSet _b;
+            public ObbObb(TA a, ObbSet b) { _a = a; _b = b; }
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public Vector<float> Compute(int i)
+            {
+                _a.Load(i, out var ca, out var ax, out var ay, out var az, out var ha);
+                new ObbLanes(_b).Load(i, out var cb, out var bx, out var by, out var bz, out var hb);
+                var tw = new V3(cb.X - ca.X, cb.Y - ca.Y, cb.Z - ca.Z);
+                Vector<float> tx = V3.Dot(tw, ax), ty = V3.Dot(tw, ay), tz = V3.Dot(tw, az);
+                Vector<float> r00 = V3.Dot(ax, bx), r01 = V3.Dot(ax, by), r02 = V3.Dot(ax, bz);
+                Vector<float> r10 = V3.Dot(ay, bx), r11 = V3.Dot(ay, by), r12 = V3.Dot(ay, bz);
+                Vector<float> r20 = V3.Dot(az, bx), r21 = V3.Dot(az, by), r22 = V3.Dot(az, bz);
+                Vector<float> q00 = Vector.Abs(r00), q01 = Vector.Abs(r01), q02 = Vector.Abs(r02);
+                Vector<float> q10 = Vector.Abs(r10), q11 = Vector.Abs(r11), q12 = Vector.Abs(r12);
+                Vector<float> q20 = Vector.Abs(r20), q21 = Vector.Abs(r21), q22 = Vector.Abs(r22);
+
+                var sep = Vector.Abs(tx) - (ha.X + hb.X * q00 + hb.Y * q01 + hb.Z * q02);
+                sep = Vector.Max(sep, Vector.Abs(ty) - (ha.Y + hb.X * q10 + hb.Y * q11 + hb.Z * q12));
+                sep = Vector.Max(sep, Vector.Abs(tz) - (ha.Z + hb.X * q20 + hb.Y * q21 + hb.Z * q22));
+                sep = Vector.Max(sep, Vector.Abs(tx * r00 + ty * r10 + tz * r20) - (ha.X * q00 + ha.Y * q10 + ha.Z * q20 + hb.X));
+                sep = Vector.Max(sep, Vector.Abs(tx * r01 + ty * r11 + tz * r21) - (ha.X * q01 + ha.Y * q11 + ha.Z * q21 + hb.Y));
+                sep = Vector.Max(sep, Vector.Abs(tx * r02 + ty * r12 + tz * r22) - (ha.X * q02 + ha.Y * q12 + ha.Z * q22 + hb.Z));
+                sep = Vector.Max(sep, Cross(tz * r10 - ty * r20, ha.Y * q20 + ha.Z * q10, hb.Y, r11 * r20 - r21 * r10, hb.Z, r12 * r20 - r22 * r10));
+                sep = Vector.Max(sep, Cross(tz * r11 - ty * r21, ha.Y * q21 + ha.Z * q11, hb.X, r10 * r21 - r20 * r11, hb.Z, r12 * r21 - r22 * r11));
+                sep = Vector.Max(sep, Cross(tz * r12 - ty * r22, ha.Y * q22 + ha.Z * q12, hb.X, r10 * r22 - r20 * r12, hb.Y, r11 * r22 - r21 * r12));
+                sep = Vector.Max(sep, Cross(tx * r20 - tz * r00, ha.X * q20 + ha.Z * q00, hb.Y, r01 * r20 - r21 * r00, hb.Z, r02 * r20 - r22 * r00));
+                sep = Vector.Max(sep, Cross(tx * r21 - tz * r01, ha.X * q21 + ha.Z * q01, hb.X, r00 * r21 - r20 * r01, hb.Z, r02 * r21 - r22 * r01));
+                sep = Vector.Max(sep, Cross(tx * r22 - tz * r02, ha.X * q22 + ha.Z * q02, hb.X, r00 * r22 - r20 * r02, hb.Y, r01 * r22 - r21 * r02));
+                sep = Vector.Max(sep, Cross(ty * r00 - tx * r10, ha.X * q10 + ha.Y * q00, hb.Y, r11 * r00 - r01 * r10, hb.Z, r12 * r00 - r02 * r10));
+                sep = Vector.Max(sep, Cross(ty * r01 - tx * r11, ha.X * q11 + ha.Y * q01, hb.X, r10 * r01 - r00 * r11, hb.Z, r12 * r01 - r02 * r11));
+                return Vector.Max(sep, Cross(ty * r02 - tx * r12, ha.X * q12 + ha.Y * q02, hb.X, r10 * r02 - r00 * r12, hb.Y, r11 * r02 - r01 * r12));
+            }
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static Vector<float> Cross(Vector<float> tl, Vector<float> ra, Vector<float> h1, Vector<float> m1, Vector<float> h2, Vector<float> m2) =>
+                Vector.Abs(tl) - (ra + h1 * Vector.Abs(m1) + h2 * Vector.Abs(m2));
+        }
+
+        private readonly struct AabbAabb<TA> : IKernel where TA : struct, IAabbs
+        {
+            private readonly TA _a;
+            private readonly AabbSet _b;
+            public AabbAabb(TA a, AabbSet b) { _a = a; _b = b; }
+
+            /// <summary>The largest per-axis gap: ≤ 0 exactly when the boxes touch or overlap (paper Eq. 18).</summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public Vector<float> Compute(int i)
+            {
+                var gx = Vector.Max(new Vector<float>(_b.MinX, i) - _a.MaxX(i), _a.MinX(i) - new Vector<float>(_b.MaxX, i));
+                var gy = Vector.Max(new Vector<float>(_b.MinY, i) - _a.MaxY(i), _a.MinY(i) - new Vector<float>(_b.MaxY, i));
+                var gz = Vector.Max(new Vector<float>(_b.MinZ, i) - _a.MaxZ(i), _a.MinZ(i) - new Vector<float>(_b.MaxZ, i));
+                return Vector.Max(gx, Vector.Max(gy, gz));
+            }
+        }
+    }
+}

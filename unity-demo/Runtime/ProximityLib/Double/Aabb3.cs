@@ -1,0 +1,97 @@
+// Copied from src/ProximityLib/Double/Aabb3.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System;
+
+namespace ProximityLib.Double
+{
+    /// <summary>A closed solid axis-aligned box [Min, Max]; zero extents (a face, an edge, a point) are allowed.</summary>
+    public readonly struct Aabb3
+    {
+        /// <summary>The minimum corner.</summary>
+        public readonly Vector3D Min;
+        /// <summary>The maximum corner.</summary>
+        public readonly Vector3D Max;
+
+        /// <summary>Creates a box; throws <see cref="ArgumentException"/> on non-finite corners or Min greater than Max on any axis.</summary>
+        public Aabb3(Vector3D min, Vector3D max)
+        {
+            Num.Finite(min, nameof(min));
+            Num.Finite(max, nameof(max));
+            if (min.X > max.X || min.Y > max.Y || min.Z > max.Z)
+                throw new ArgumentException($"min {min} must not exceed max {max} on any axis.", nameof(min));
+            Min = min; Max = max;
+        }
+
+        /// <summary>The paper's form: minimum corner plus length (X), height (Y) and width (Z), all non-negative.</summary>
+        public static Aabb3 FromOrigin(Vector3D origin, double length, double height, double width)
+        {
+            Num.Finite(origin, nameof(origin));
+            Num.NonNegative(length, nameof(length));
+            Num.NonNegative(height, nameof(height));
+            Num.NonNegative(width, nameof(width));
+            return new Aabb3(origin, origin + new Vector3D(length, height, width));
+        }
+
+        /// <summary>A box from its center and non-negative half-extents.</summary>
+        public static Aabb3 FromCenter(Vector3D center, Vector3D halfExtents)
+        {
+            Num.Finite(center, nameof(center));
+            Num.Finite(halfExtents, nameof(halfExtents));
+            if (halfExtents.X < 0 || halfExtents.Y < 0 || halfExtents.Z < 0)
+                throw new ArgumentException($"halfExtents must be non-negative (got {halfExtents}).", nameof(halfExtents));
+            return new Aabb3(center - halfExtents, center + halfExtents);
+        }
+
+        /// <summary>The center, (Min + Max) / 2.</summary>
+        public Vector3D Center => (Min + Max) * 0.5;
+
+        internal Box ToBox() => new Box(Min, Vector3D.UnitX, Vector3D.UnitY, Vector3D.UnitZ, default, Max - Min, false);
+    }
+
+    /// <summary>A closed solid axis-aligned rectangle [Min, Max]; zero extents (a segment, a point) are allowed.</summary>
+    public readonly struct Aabb2
+    {
+        /// <summary>The minimum corner.</summary>
+        public readonly Vector2D Min;
+        /// <summary>The maximum corner.</summary>
+        public readonly Vector2D Max;
+
+        /// <summary>Creates a rectangle; throws <see cref="ArgumentException"/> on non-finite corners or Min greater than Max on any axis.</summary>
+        public Aabb2(Vector2D min, Vector2D max)
+        {
+            Num.Finite(min, nameof(min));
+            Num.Finite(max, nameof(max));
+            if (min.X > max.X || min.Y > max.Y)
+                throw new ArgumentException($"min {min} must not exceed max {max} on any axis.", nameof(min));
+            Min = min; Max = max;
+        }
+
+        /// <summary>The paper's form: minimum corner plus length (X) and height (Y), both non-negative.</summary>
+        public static Aabb2 FromOrigin(Vector2D origin, double length, double height)
+        {
+            Num.Finite(origin, nameof(origin));
+            Num.NonNegative(length, nameof(length));
+            Num.NonNegative(height, nameof(height));
+            return new Aabb2(origin, origin + new Vector2D(length, height));
+        }
+
+        /// <summary>A rectangle from its center and non-negative half-extents.</summary>
+        public static Aabb2 FromCenter(Vector2D center, Vector2D halfExtents)
+        {
+            Num.Finite(center, nameof(center));
+            Num.Finite(halfExtents, nameof(halfExtents));
+            if (halfExtents.X < 0 || halfExtents.Y < 0)
+                throw new ArgumentException($"halfExtents must be non-negative (got {halfExtents}).", nameof(halfExtents));
+            return new Aabb2(center - halfExtents, center + halfExtents);
+        }
+
+        /// <summary>The center, (Min + Max) / 2.</summary>
+        public Vector2D Center => (Min + Max) * 0.5;
+
+        internal Box ToBox()
+        {
+            var ext = Max - Min;
+            return new Box(Min.To3(), Vector3D.UnitX, Vector3D.UnitY, Vector3D.UnitZ, default, new Vector3D(ext.X, ext.Y, 0), true);
+        }
+    }
+}

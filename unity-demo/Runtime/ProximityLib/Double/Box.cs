@@ -1,0 +1,39 @@
+// Copied from src/ProximityLib/Double/Box.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System.Runtime.CompilerServices;
+
+namespace ProximityLib.Double
+{
+    /// <summary>
+    /// The one box form the kernels see: Origin + X*u + Y*v + Z*w with (u, v, w) in [Lo, Hi].
+    /// An AABB keeps its Min as origin (Lo = 0, Hi = Max - Min) so nothing is rounded at the scale of its
+    /// position; an OBB keeps its center (Lo = -Half, Hi = Half). Planar boxes come from the 2D API: they lie
+    /// in z = 0 with Lo.Z = Hi.Z = 0, and the kernels then never pick z as a separating or push-out direction.
+    /// </summary>
+    internal readonly struct Box
+    {
+        public readonly Vector3D Origin, X, Y, Z, Lo, Hi;
+        public readonly bool Planar;
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public Box(Vector3D origin, Vector3D x, Vector3D y, Vector3D z, Vector3D lo, Vector3D hi, bool planar)
+        {
+            Origin = origin; X = x; Y = y; Z = z; Lo = lo; Hi = hi; Planar = planar;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public Vector3D ToLocal(Vector3D worldOffset) =>
+            new Vector3D(Vector3D.Dot(worldOffset, X), Vector3D.Dot(worldOffset, Y), Vector3D.Dot(worldOffset, Z));
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public Vector3D ToWorldOffset(Vector3D local) => X * local.X + Y * local.Y + Z * local.Z;
+
+        public Vector3D Axis(int i) => i == 0 ? X : (i == 1 ? Y : Z);
+
+        /// <summary>Box-local centre and half-extents; exact for both AABB ([0, ext]) and OBB ([−h, h]) forms.</summary>
+        public Vector3D LocalCenter => (Lo + Hi) * 0.5;
+        public Vector3D Half => (Hi - Lo) * 0.5;
+
+        public Box Translated(Vector3D by) => new Box(Origin + by, X, Y, Z, Lo, Hi, Planar);
+    }
+}

@@ -1,0 +1,219 @@
+// Copied from src/ProximityLib/Double/Kernels/PointKernels.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System;
+using System.Runtime.CompilerServices;
+
+namespace ProximityLib.Double
+{
+    /// <summary>A point against a shape: signed distance, the shape's witness point, and the unit normal from that point toward the query point (outward when inside).</summary>
+    internal readonly struct PointContact
+    {
+        public readonly double Distance, DistanceSquared, Parameter;
+        public readonly Vector3D Closest, Normal;
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public PointContact(double distance, double distanceSquared, Vector3D closest, Vector3D normal, double parameter)
+        {
+            Distance = distance; DistanceSquared = distanceSquared; Closest = closest; Normal = normal; Parameter = parameter;
+        }
+
+        /// <summary>The point's result against the shape, as the pair (point, shape).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public DistanceResult3 AsPointFirst(Vector3D p) => new DistanceResult3(Distance, DistanceSquared, p, Closest, 0, Parameter);
+
+        /// <summary>A sphere of the given radius centred at the query point: the same witness on the shape, distance less the radius.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public DistanceResult3 AsSphereFirst(Vector3D center, double radius)
+        {
+            double d = Distance - radius;
+            return new DistanceResult3(d, d > 0 ? d * d : 0, center - Normal * radius, Closest, 0, Parameter);
+        }
+    }
+
+    internal static partial class Kernels
+    {
+        /// <summary>
+        /// Residual p − q from the closest point q = a + t·(b − a) of segment [a, b] to p. The residual is formed from the
+        /// nearer endpoint so a point far along the line loses nothing to a large t·(b − a) (Eberly, "Distance from a point
+        /// to a segment"; not the paper's Eq. 10, whose |w|² − (w·v)²/|v|² cancels catastrophically).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Vector3D PointSegmentResidual(Vector3D p, Vector3D a, Vector3D b, out double t)
+        {
+            var d = b - a;
+            var w = p - a;
+            double dd = d.LengthSquared, wd = Vector3D.Dot(w, d);
+            if (wd <= 0 || dd == 0) { t = 0; return w; }
+            if (wd >= dd) { t = 1; return p - b; }
+            t = wd / dd;
+            return t <= 0.5 ? w - d * t : (p - b) + d * (1 - t);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Vector3D SegmentPoint(Vector3D a, Vector3D b, double t) =>
+            t <= 0.5 ? a + (b - a) * t : b - (b - a) * (1 - t);
+
+        public static PointContact PointSegment(Vector3D p, Vector3D a, Vector3D b)
+        {
+            var r = PointSegmentResidual(p, a, b, out double t);
+            double r2 = r.LengthSquared, dist = Math.Sqrt(r2);
+            var n = dist > 0 ? r / dist : AnyPerpendicular(b - a);
+            return new PointContact(dist, r2, SegmentPoint(a, b, t), n, t);
+        }
+
+        /// <summary>A unit vector perpendicular to d, in the z = 0 plane whenever d is (so the 2D API stays planar); +X for d = 0.</summary>
+        public static Vector3D AnyPerpendicular(Vector3D d)
+        {
+            var n = new Vector3D(d.Y, -d.X, 0);
+            if (n.LengthSquared == 0) n = new Vector3D(0, d.Z, -d.Y);
+            double len = n.Length;
+            return len > 0 ? n / len : Vector3D.UnitX;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static PointContact PointSphere(Vector3D p, Vector3D center, double radius)
+        {
+            var r = p - center;
+            double len = r.Length;
+            // Coincident centres have no preferred direction: +X is documented and keeps the 2D API planar.
+            var n = len > 0 ? r * (1 / len) : Vector3D.UnitX;
+            double d = len - radius;
+            return new PointContact(d, d > 0 ? d * d : 0, center + n * radius, n, 0);
+        }
+
+        /// <summary>
+        /// Point against a solid box. Outside: clamp in the box frame (Ericson, RTCD §5.1.3). Inside or on the boundary:
+        /// the nearest face gives the penetration depth and its outward normal; ties go to the lower axis, Lo before Hi.
+        /// </summary>
+        public static PointContact PointBox(Vector3D p, in Box box)
+        {
+            var q = box.ToLocal(p - box.Origin);
+            var c = new Vector3D(Num.Clamp(q.X, box.Lo.X, box.Hi.X), Num.Clamp(q.Y, box.Lo.Y, box.Hi.Y), Num.Clamp(q.Z, box.Lo.Z, box.Hi.Z));
+            if (q != c)
+            {
+                // The decision is made in the box frame; the gap is measured in world space from p − origin, which
+                // carries one rounding per component instead of a rotated copy's three.
+                var offset = box.ToWorldOffset(c);
+                var diff = (p - box.Origin) - offset;
+                double d2 = diff.LengthSquared;
+                double d = Math.Sqrt(d2);
+                var normal = d > 0 ? diff * (1 / d) : box.ToWorldOffset(Unit(q - c));
+                return new PointContact(d, d2, box.Origin + offset, normal, 0);
+            }
+
+            double depth = NearestFace(q, box.Lo, box.Hi, box.Planar, out int face);
+            var onFace = FacePoint(q, box.Lo, box.Hi, face);
+            return new PointContact(-depth, 0, box.Origin + box.ToWorldOffset(onFace), box.ToWorldOffset(FaceNormal(face)), 0);
+        }
+
+        /// <summary>
+        /// Point against an axis-aligned box given by its corners. The clamp is exact in world coordinates and the gap is
+        /// one subtraction per axis, so this is both the fastest and the most accurate form for AABBs.
+        /// </summary>
+        public static PointContact PointAabb(Vector3D p, Vector3D min, Vector3D max, bool planar)
+        {
+            var c = new Vector3D(Num.Clamp(p.X, min.X, max.X), Num.Clamp(p.Y, min.Y, max.Y), Num.Clamp(p.Z, min.Z, max.Z));
+            if (p != c)
+            {
+                var diff = p - c;
+                double d2 = diff.LengthSquared;
+                double d = Math.Sqrt(d2);
+                return new PointContact(d, d2, c, d > 0 ? diff * (1 / d) : Unit(diff / MaxAbs(diff)), 0);
+            }
+            double depth = NearestFace(p, min, max, planar, out int face);
+            return new PointContact(-depth, 0, FacePoint(p, min, max, face), FaceNormal(face), 0);
+        }
+
+        /// <summary>
+        /// Depth of a point inside [lo, hi] below its nearest face; face = 2·axis + (1 for the hi face). Ties go to the
+        /// lower axis and the lo face. Planar boxes skip z.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double NearestFace(Vector3D q, Vector3D lo, Vector3D hi, bool planar, out int face)
+        {
+            double best = q.X - lo.X, t;
+            face = 0;
+            if ((t = hi.X - q.X) < best) { best = t; face = 1; }
+            if ((t = q.Y - lo.Y) < best) { best = t; face = 2; }
+            if ((t = hi.Y - q.Y) < best) { best = t; face = 3; }
+            if (!planar)
+            {
+                if ((t = q.Z - lo.Z) < best) { best = t; face = 4; }
+                if ((t = hi.Z - q.Z) < best) { best = t; face = 5; }
+            }
+            return best;
+        }
+
+        private static Vector3D FacePoint(Vector3D q, Vector3D lo, Vector3D hi, int face) => face switch
+        {
+            0 => new Vector3D(lo.X, q.Y, q.Z),
+            1 => new Vector3D(hi.X, q.Y, q.Z),
+            2 => new Vector3D(q.X, lo.Y, q.Z),
+            3 => new Vector3D(q.X, hi.Y, q.Z),
+            4 => new Vector3D(q.X, q.Y, lo.Z),
+            _ => new Vector3D(q.X, q.Y, hi.Z),
+        };
+
+        private static Vector3D FaceNormal(int face) => face switch
+        {
+            0 => new Vector3D(-1, 0, 0),
+            1 => new Vector3D(1, 0, 0),
+            2 => new Vector3D(0, -1, 0),
+            3 => new Vector3D(0, 1, 0),
+            4 => new Vector3D(0, 0, -1),
+            _ => new Vector3D(0, 0, 1),
+        };
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double MaxAbs(Vector3D v) => Math.Max(Math.Abs(v.X), Math.Max(Math.Abs(v.Y), Math.Abs(v.Z)));
+
+        private static Vector3D Unit(Vector3D v) => v / v.Length;
+
+        /// <summary>Whether p lies in the closed box (no square root).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool PointInBox(Vector3D p, in Box box)
+        {
+            var q = box.ToLocal(p - box.Origin);
+            return q.X >= box.Lo.X && q.X <= box.Hi.X && q.Y >= box.Lo.Y && q.Y <= box.Hi.Y && q.Z >= box.Lo.Z && q.Z <= box.Hi.Z;
+        }
+
+        /// <summary>Whether p lies in the closed axis-aligned box [min, max].</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool PointInAabb(Vector3D p, Vector3D min, Vector3D max) =>
+            p.X >= min.X && p.X <= max.X && p.Y >= min.Y && p.Y <= max.Y && p.Z >= min.Z && p.Z <= max.Z;
+
+        /// <summary>Squared distance from p to the closed axis-aligned box (Arvo's test without the square root).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double PointAabbDistanceSquared(Vector3D p, Vector3D min, Vector3D max)
+        {
+            double dx = p.X - Num.Clamp(p.X, min.X, max.X);
+            double dy = p.Y - Num.Clamp(p.Y, min.Y, max.Y);
+            double dz = p.Z - Num.Clamp(p.Z, min.Z, max.Z);
+            return dx * dx + dy * dy + dz * dz;
+        }
+
+        /// <summary>Squared distance from p to the closed box (Arvo's test without the square root).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double PointBoxDistanceSquared(Vector3D p, in Box box)
+        {
+            var q = box.ToLocal(p - box.Origin);
+            double dx = q.X - Num.Clamp(q.X, box.Lo.X, box.Hi.X);
+            double dy = q.Y - Num.Clamp(q.Y, box.Lo.Y, box.Hi.Y);
+            double dz = q.Z - Num.Clamp(q.Z, box.Lo.Z, box.Hi.Z);
+            return dx * dx + dy * dy + dz * dz;
+        }
+    }
+
+    internal static class Vec
+    {
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double Get(Vector3D v, int i) => i == 0 ? v.X : (i == 1 ? v.Y : v.Z);
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Vector3D With(Vector3D v, int i, double value) =>
+            i == 0 ? new Vector3D(value, v.Y, v.Z) : (i == 1 ? new Vector3D(v.X, value, v.Z) : new Vector3D(v.X, v.Y, value));
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Vector3D Abs(Vector3D v) => new Vector3D(Math.Abs(v.X), Math.Abs(v.Y), Math.Abs(v.Z));
+    }
+}

@@ -1,0 +1,277 @@
+// Copied from src/ProximityLib/Double/Kernels/SegmentKernels.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System;
+using System.Runtime.CompilerServices;
+
+namespace ProximityLib.Double
+{
+    internal static partial class Kernels
+    {
+        /// <summary>
+        /// Squared distance between segments [a0, a1] and [b0, b1] and the parameters (s, t) of a closest pair.
+        /// The objective is a convex quadratic on the unit square. The lines' closest parameters come from the Lagrange
+        /// identity |d0|²|d1|² − (d0·d1)² = |d0 × d1|² with cross-product numerators (the usual determinant cancels to
+        /// noise for nearly parallel segments), on a copy scaled by a power of two because |d0 × d1|² is a fourth power
+        /// of the size. Well conditioned: inside is the answer, outside is clamped s, best t for it, and best s for a
+        /// clamped t (Ericson, Real-Time Collision Detection §5.1.9). Nearly parallel or parallel: the best of the
+        /// interior point and the four endpoint–segment candidates (the case split of Eberly's robust method).
+        /// </summary>
+        public static double SegmentSegmentCore(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, out double s, out double t)
+        {
+            var d0 = a1 - a0;
+            var d1 = b1 - b0;
+            var w = b0 - a0;
+            double a = d0.LengthSquared, e = d1.LengthSquared;
+            double b = Vector3D.Dot(d0, d1), c = -Vector3D.Dot(d0, w), f = -Vector3D.Dot(d1, w);
+            if (a == 0 || e == 0)
+            {
+                // A point against a segment (or a point).
+                if (a == 0 && e == 0) { s = 0; t = 0; return w.LengthSquared; }
+                if (a == 0) { s = 0; t = Num.Clamp(f / e, 0, 1); }
+                else { t = 0; s = Num.Clamp(-c / a, 0, 1); }
+                return Residual(d0, d1, w, s, t);
+            }
+
+            double k = InverseSizeScale(a + e + w.LengthSquared);
+            var d0k = d0 * k;
+            var d1k = d1 * k;
+            var wk = w * k;
+            var n = Vector3D.Cross(d0k, d1k);
+            double nn = n.LengthSquared;
+            double si = nn > 0 ? Vector3D.Dot(Vector3D.Cross(wk, d1k), n) / nn : 0;
+            double ti = nn > 0 ? Vector3D.Dot(Vector3D.Cross(wk, d0k), n) / nn : 0;
+            bool interior = nn > 0 && si >= 0 && si <= 1 && ti >= 0 && ti <= 1;
+            // The gap between the lines, (w·n)²/|n|², carries no error from (s, t), which nearly parallel segments
+            // determine only loosely; crossing 2D segments give exactly 0.
+            double lineGap = double.PositiveInfinity;
+            if (interior)
+            {
+                double wn = Vector3D.Dot(wk, n);
+                lineGap = wn * wn / nn / k / k;
+            }
+
+            if (nn >= 1e-4 * d0k.LengthSquared * d1k.LengthSquared)
+            {
+                // Well conditioned (sin²θ ≥ 1e-4): the interior point is the minimum when it is inside; otherwise clamp.
+                s = si; t = ti;
+                if (interior) return lineGap;
+                s = Num.Clamp(si, 0, 1);
+                double tNum = b * s + f;
+                if (tNum < 0) { t = 0; s = Num.Clamp(-c / a, 0, 1); }
+                else if (tNum > e) { t = 1; s = Num.Clamp((b - c) / a, 0, 1); }
+                else t = tNum / e;
+                return Residual(d0, d1, w, s, t);
+            }
+
+            return NearlyParallel(a0, a1, b0, b1, lineGap, si, ti, out s, out t);
+        }
+
+        /// <summary>
+        /// Nearly parallel: the clamped sequence would start from a noisy s, so take the best of the interior point and
+        /// the four endpoint–segment candidates; each is a pair of real points, so a noisy one can only lose. Kept out of
+        /// line so the common path stays small enough for the JIT to inline everything in it.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static double NearlyParallel(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, double lineGap, double si, double ti, out double s, out double t)
+        {
+            double best = lineGap;
+            s = si; t = ti;
+            double r2 = PointSegmentResidual(a0, b0, b1, out double tc).LengthSquared;
+            if (r2 < best) { best = r2; s = 0; t = tc; }
+            r2 = PointSegmentResidual(a1, b0, b1, out tc).LengthSquared;
+            if (r2 < best) { best = r2; s = 1; t = tc; }
+            r2 = PointSegmentResidual(b0, a0, a1, out double sc).LengthSquared;
+            if (r2 < best) { best = r2; s = sc; t = 0; }
+            r2 = PointSegmentResidual(b1, a0, a1, out sc).LengthSquared;
+            if (r2 < best) { best = r2; s = sc; t = 1; }
+            return best;
+        }
+
+        /// <summary>|a0 + s·d0 − b0 − t·d1|², formed from the differences so no endpoint's position enters.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Residual(Vector3D d0, Vector3D d1, Vector3D w, double s, double t) => (d0 * s - d1 * t - w).LengthSquared;
+
+        public static DistanceResult3 SegmentSegment(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1)
+        {
+            double r2 = SegmentSegmentCore(a0, a1, b0, b1, out double s, out double t);
+            return new DistanceResult3(Math.Sqrt(r2), r2, SegmentPoint(a0, a1, s), SegmentPoint(b0, b1, t), s, t);
+        }
+
+        /// <summary>
+        /// A power of two k with k²·size² in [1, 4): from the exponent of the squared size (a sum of squared lengths, which
+        /// stays normal throughout the documented range) halved, so scaling by k is exact and cheap (no square root,
+        /// no Math.Max; Math.ScaleB/ILogB are not in netstandard2.1).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double InverseSizeScale(double size2)
+        {
+            long exponent = ((BitConverter.DoubleToInt64Bits(size2) >> 52) & 0x7FF) - 1023;
+            long biased = Math.Min(2046, Math.Max(1, 1023 - (exponent >> 1)));
+            return BitConverter.Int64BitsToDouble(biased << 52);
+        }
+
+
+        /// <summary>
+        /// Minimum over t ∈ [0, 1] of the squared distance from a + t·d to the box [lo, hi] (all box-local). The function is
+        /// convex and piecewise quadratic, with breakpoints where the segment crosses a slab plane; on each piece the set
+        /// of clamped axes is fixed, so the piece's minimum is its clamped stationary point. The best piece wins.
+        /// </summary>
+        public static double SegmentBoxLocal(Vector3D a, Vector3D d, Vector3D lo, Vector3D hi, out double t)
+        {
+            Span<double> ts = stackalloc double[8];
+            int n = 0;
+            ts[n++] = 0;
+            AddCrossings(a.X, d.X, lo.X, hi.X, ts, ref n);
+            AddCrossings(a.Y, d.Y, lo.Y, hi.Y, ts, ref n);
+            AddCrossings(a.Z, d.Z, lo.Z, hi.Z, ts, ref n);
+            ts[n++] = 1;
+            for (int i = 2; i < n - 1; i++)
+            {
+                double v = ts[i];
+                int j = i - 1;
+                while (j >= 1 && ts[j] > v) { ts[j + 1] = ts[j]; j--; }
+                ts[j + 1] = v;
+            }
+
+            double best = double.PositiveInfinity;
+            t = 0;
+            for (int k = 0; k + 1 < n; k++)
+            {
+                double t0 = ts[k], t1 = ts[k + 1], tm = 0.5 * (t0 + t1);
+                double num = 0, den = 0;
+                Accumulate(a.X, d.X, lo.X, hi.X, tm, ref num, ref den);
+                Accumulate(a.Y, d.Y, lo.Y, hi.Y, tm, ref num, ref den);
+                Accumulate(a.Z, d.Z, lo.Z, hi.Z, tm, ref num, ref den);
+                double tc = den > 0 ? Num.Clamp(num / den, t0, t1) : t0;
+                double g = Gap(a.X, d.X, lo.X, hi.X, tc) + Gap(a.Y, d.Y, lo.Y, hi.Y, tc) + Gap(a.Z, d.Z, lo.Z, hi.Z, tc);
+                if (g < best) { best = g; t = tc; }
+            }
+            return best;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void AddCrossings(double a, double d, double lo, double hi, Span<double> ts, ref int n)
+        {
+            if (d == 0) return;
+            double t = (lo - a) / d;
+            if (t > 0 && t < 1) ts[n++] = t;
+            if (hi != lo)
+            {
+                t = (hi - a) / d;
+                if (t > 0 && t < 1) ts[n++] = t;
+            }
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void Accumulate(double a, double d, double lo, double hi, double t, ref double num, ref double den)
+        {
+            double e = a + t * d;
+            double bound;
+            if (e < lo) bound = lo;
+            else if (e > hi) bound = hi;
+            else return;
+            num += d * (bound - a);
+            den += d * d;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Gap(double a, double d, double lo, double hi, double t)
+        {
+            double e = a + t * d;
+            double g = e < lo ? lo - e : (e > hi ? e - hi : 0);
+            return g * g;
+        }
+
+        /// <summary>Closest points of a segment and a box when they are apart (squared distance 0 when they meet).</summary>
+        public static double SegmentBoxSeparated(Vector3D a, Vector3D b, in Box box, out double t, out Vector3D onSegment, out Vector3D onBox)
+        {
+            var la = box.ToLocal(a - box.Origin);
+            var ld = box.ToLocal(b - a);
+            double g = SegmentBoxLocal(la, ld, box.Lo, box.Hi, out t);
+            var e = la + ld * t;
+            var c = new Vector3D(Num.Clamp(e.X, box.Lo.X, box.Hi.X), Num.Clamp(e.Y, box.Lo.Y, box.Hi.Y), Num.Clamp(e.Z, box.Lo.Z, box.Hi.Z));
+            onSegment = SegmentPoint(a, b, t);
+            onBox = box.Origin + box.ToWorldOffset(c);
+            return g;
+        }
+
+        /// <summary>
+        /// Segment against a solid box. Apart: the piecewise-quadratic minimum above. Meeting: the minimum translation
+        /// over the separating-axis candidates of the Minkowski sum (box normals and segment × box edges), each
+        /// evaluated on its own normalised direction so a noisy near-degenerate axis can only overestimate; the witness
+        /// points are the closest points of the just-touching configuration, moved back.
+        /// </summary>
+        public static DistanceResult3 SegmentBox(Vector3D a, Vector3D b, in Box box)
+        {
+            // The separating-axis verdict decides which side we are on: the squared gap alone would call a segment
+            // crossing a zero-thickness box "apart" by rounding.
+            if (!SegmentBoxOverlaps(a, b, box))
+            {
+                double g = SegmentBoxSeparated(a, b, box, out double t, out var onSegment, out var onBox);
+                return new DistanceResult3(Math.Sqrt(g), g, onSegment, onBox, t, 0);
+            }
+
+            var la = box.ToLocal(a - box.Origin);
+            var ld = box.ToLocal(b - a);
+            double depth = Math.Max(0, SegmentBoxPenetration(la, ld, box, out var pushLocal));
+            var push = box.ToWorldOffset(pushLocal);
+            SegmentBoxSeparated(a + push, b + push, box, out double tp, out _, out var touch);
+            return new DistanceResult3(-depth, 0, SegmentPoint(a, b, tp), depth > 0 ? touch : SegmentPoint(a, b, tp), tp, 0);
+        }
+
+        private static double SegmentBoxPenetration(Vector3D a, Vector3D d, in Box box, out Vector3D push)
+        {
+            var c = box.LocalCenter;
+            var h = box.Half;
+            double best = double.PositiveInfinity;
+            push = default;
+            TryPushAxis(Vector3D.UnitX, a, d, c, h, ref best, ref push);
+            TryPushAxis(Vector3D.UnitY, a, d, c, h, ref best, ref push);
+            TryPushAxis(new Vector3D(d.Y, -d.X, 0), a, d, c, h, ref best, ref push);
+            if (!box.Planar)
+            {
+                TryPushAxis(Vector3D.UnitZ, a, d, c, h, ref best, ref push);
+                TryPushAxis(new Vector3D(0, d.Z, -d.Y), a, d, c, h, ref best, ref push);
+                TryPushAxis(new Vector3D(-d.Z, 0, d.X), a, d, c, h, ref best, ref push);
+            }
+            return best;
+        }
+
+        private static void TryPushAxis(Vector3D axis, Vector3D a, Vector3D d, Vector3D c, Vector3D h, ref double best, ref Vector3D push)
+        {
+            double len2 = axis.LengthSquared;
+            if (!(len2 > 0) || double.IsInfinity(len2)) return;
+            var n = axis / Math.Sqrt(len2);
+            double pa = Vector3D.Dot(a - c, n), pb = pa + Vector3D.Dot(d, n);
+            double smin = Math.Min(pa, pb), smax = Math.Max(pa, pb);
+            double r = Vector3D.Dot(h, Vec.Abs(n));
+            double down = smax + r; // moving the segment by −n·down clears the box
+            double up = r - smin;   // moving it by +n·up clears the box
+            if (down < best) { best = down; push = -n * down; }
+            if (up < best) { best = up; push = n * up; }
+        }
+
+        /// <summary>Segment–box overlap by the separating-axis test in the box frame, no square roots, early outs.</summary>
+        public static bool SegmentBoxOverlaps(Vector3D a, Vector3D b, in Box box)
+        {
+            var c = box.LocalCenter;
+            var h = box.Half;
+            var m = box.ToLocal(a - box.Origin) - c;
+            var d = box.ToLocal(b - a);
+            if (Separates(Vector3D.UnitX, m, d, h)) return false;
+            if (Separates(Vector3D.UnitY, m, d, h)) return false;
+            if (!box.Planar && Separates(Vector3D.UnitZ, m, d, h)) return false;
+            if (Separates(new Vector3D(d.Y, -d.X, 0), m, d, h)) return false;
+            if (box.Planar) return true;
+            return !Separates(new Vector3D(0, d.Z, -d.Y), m, d, h) && !Separates(new Vector3D(-d.Z, 0, d.X), m, d, h);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool Separates(Vector3D axis, Vector3D m, Vector3D d, Vector3D h)
+        {
+            double pa = Vector3D.Dot(m, axis), pb = pa + Vector3D.Dot(d, axis);
+            double r = Vector3D.Dot(h, Vec.Abs(axis));
+            return Math.Min(pa, pb) > r || Math.Max(pa, pb) < -r;
+        }
+    }
+}

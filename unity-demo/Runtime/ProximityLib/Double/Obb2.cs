@@ -1,0 +1,90 @@
+// Copied from src/ProximityLib/Double/Obb2.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System;
+
+namespace ProximityLib.Double
+{
+    /// <summary>
+    /// A closed solid oriented rectangle: Center + AxisX*u + AxisY*v with |u|, |v| bounded by HalfExtents, where
+    /// AxisY is AxisX turned +90°. <c>default</c> is the axis-aligned point box at the origin.
+    /// </summary>
+    public readonly struct Obb2
+    {
+        private readonly double _cos, _sin;
+        // default(Obb2) must be valid: without this flag its axis would be zero.
+        private readonly bool _hasAxis;
+
+        /// <summary>The center.</summary>
+        public readonly Vector2D Center;
+        /// <summary>The non-negative half-extents along AxisX and AxisY.</summary>
+        public readonly Vector2D HalfExtents;
+
+        /// <summary>The first box axis (unit).</summary>
+        public Vector2D AxisX => _hasAxis ? new Vector2D(_cos, _sin) : Vector2D.UnitX;
+        /// <summary>The second box axis: AxisX turned +90°.</summary>
+        public Vector2D AxisY => _hasAxis ? new Vector2D(-_sin, _cos) : Vector2D.UnitY;
+
+        /// <summary>Creates a box from a unit axis (within <see cref="Obb3.AxisTolerance"/>, re-normalised here).</summary>
+        public Obb2(Vector2D center, Vector2D axisX, Vector2D halfExtents)
+        {
+            Num.Finite(center, nameof(center));
+            CheckHalfExtents(halfExtents);
+            Num.Finite(axisX, nameof(axisX));
+            if (!(Math.Abs(axisX.LengthSquared - 1) <= Obb3.AxisTolerance))
+                throw new ArgumentException($"axisX must be a unit vector within {Obb3.AxisTolerance}.", nameof(axisX));
+            double len = axisX.Length;
+            Center = center; HalfExtents = halfExtents;
+            _cos = axisX.X / len; _sin = axisX.Y / len; _hasAxis = true;
+        }
+
+        /// <summary>Creates a box rotated counter-clockwise by <paramref name="angle"/> radians.</summary>
+        public Obb2(Vector2D center, double angle, Vector2D halfExtents)
+        {
+            Num.Finite(center, nameof(center));
+            CheckHalfExtents(halfExtents);
+            Num.Finite(angle, nameof(angle));
+            Center = center; HalfExtents = halfExtents;
+            _cos = Math.Cos(angle); _sin = Math.Sin(angle); _hasAxis = true;
+        }
+
+        /// <summary>
+        /// The paper's form: the box's four corners and its two edge normals (<paramref name="axisX"/>, <paramref name="axisY"/>). The result is the smallest box with
+        /// those axes containing every corner, which is the box itself when the corners are a box's corners.
+        /// </summary>
+        public static Obb2 FromCorners(ReadOnlySpan<Vector2D> corners, Vector2D axisX, Vector2D axisY)
+        {
+            if (corners.Length != 4) throw new ArgumentException($"a rectangle has 4 corners (got {corners.Length}).", nameof(corners));
+            var axes = new Obb3(default, axisX.To3(), axisY.To3(), Vector3D.UnitZ, default);
+            var sum = default(Vector2D);
+            for (int i = 0; i < 4; i++)
+            {
+                Num.Finite(corners[i], nameof(corners));
+                sum += corners[i];
+            }
+            var center = sum * 0.25;
+            var ax = Vector2D.From3(axes.AxisX);
+            double hx = 0, hy = 0;
+            for (int i = 0; i < 4; i++)
+            {
+                var d = corners[i] - center;
+                hx = Math.Max(hx, Math.Abs(Vector2D.Dot(d, ax)));
+                hy = Math.Max(hy, Math.Abs(Vector2D.Cross(ax, d)));
+            }
+            return new Obb2(center, ax, new Vector2D(hx, hy));
+        }
+
+        internal Box ToBox()
+        {
+            var x = AxisX;
+            return new Box(Center.To3(), new Vector3D(x.X, x.Y, 0), new Vector3D(-x.Y, x.X, 0), Vector3D.UnitZ,
+                new Vector3D(-HalfExtents.X, -HalfExtents.Y, 0), new Vector3D(HalfExtents.X, HalfExtents.Y, 0), true);
+        }
+
+        private static void CheckHalfExtents(Vector2D h)
+        {
+            Num.Finite(h, "halfExtents");
+            if (h.X < 0 || h.Y < 0)
+                throw new ArgumentException($"halfExtents must be non-negative (got {h}).", "halfExtents");
+        }
+    }
+}

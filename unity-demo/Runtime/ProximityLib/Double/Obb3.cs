@@ -1,0 +1,131 @@
+// Copied from src/ProximityLib/Double/Obb3.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System;
+
+namespace ProximityLib.Double
+{
+    /// <summary>
+    /// A closed solid oriented box: Center + AxisX*u + AxisY*v + AxisZ*w with |u|, |v|, |w| bounded by HalfExtents.
+    /// Axes are stored orthonormal to double precision (given axes are checked against <see cref="AxisTolerance"/>
+    /// and then re-orthonormalised); <c>default</c> is the axis-aligned point box at the origin.
+    /// </summary>
+    public readonly struct Obb3
+    {
+        /// <summary>How far given axes may be from orthonormal: |a·a − 1| and |a·b| at most this.</summary>
+        public const double AxisTolerance = 1e-4;
+
+        private readonly Vector3D _x, _y, _z;
+        // default(Obb3) must be valid: without this flag its axes would be zero.
+        private readonly bool _hasAxes;
+
+        /// <summary>The center.</summary>
+        public readonly Vector3D Center;
+        /// <summary>The non-negative half-extents along AxisX, AxisY, AxisZ.</summary>
+        public readonly Vector3D HalfExtents;
+
+        /// <summary>The first box axis (unit).</summary>
+        public Vector3D AxisX => _hasAxes ? _x : Vector3D.UnitX;
+        /// <summary>The second box axis (unit).</summary>
+        public Vector3D AxisY => _hasAxes ? _y : Vector3D.UnitY;
+        /// <summary>The third box axis (unit).</summary>
+        public Vector3D AxisZ => _hasAxes ? _z : Vector3D.UnitZ;
+
+        /// <summary>Creates a box from orthonormal axes; throws <see cref="ArgumentException"/> on non-finite input, negative half-extents, or axes off orthonormal by more than <see cref="AxisTolerance"/>.</summary>
+        public Obb3(Vector3D center, Vector3D axisX, Vector3D axisY, Vector3D axisZ, Vector3D halfExtents)
+        {
+            Num.Finite(center, nameof(center));
+            CheckHalfExtents(halfExtents);
+            CheckUnit(axisX, nameof(axisX));
+            CheckUnit(axisY, nameof(axisY));
+            CheckUnit(axisZ, nameof(axisZ));
+            CheckOrthogonal(axisX, axisY, nameof(axisY));
+            CheckOrthogonal(axisX, axisZ, nameof(axisZ));
+            CheckOrthogonal(axisY, axisZ, nameof(axisZ));
+            // Gram–Schmidt in double: the stored frame is orthonormal to rounding, which the kernels rely on.
+            var x = axisX / axisX.Length;
+            var y = axisY - x * Vector3D.Dot(x, axisY);
+            y /= y.Length;
+            var z = axisZ - x * Vector3D.Dot(x, axisZ) - y * Vector3D.Dot(y, axisZ);
+            z /= z.Length;
+            Center = center; HalfExtents = halfExtents; _x = x; _y = y; _z = z; _hasAxes = true;
+        }
+
+        /// <summary>Creates a box rotated by a quaternion (normalised here; it must be finite and non-zero).</summary>
+        public Obb3(Vector3D center, System.Numerics.Quaternion rotation, Vector3D halfExtents)
+            : this(FromQuaternion(center, rotation.X, rotation.Y, rotation.Z, rotation.W, halfExtents)) { }
+
+        private Obb3(Obb3 other) { this = other; }
+
+        private Obb3(Vector3D center, Vector3D x, Vector3D y, Vector3D z, Vector3D halfExtents, bool trusted)
+        {
+            Center = center; HalfExtents = halfExtents; _x = x; _y = y; _z = z; _hasAxes = trusted;
+        }
+
+        /// <summary>Creates a box rotated by the quaternion (x, y, z, w), which is normalised here and must be finite and non-zero.</summary>
+        public static Obb3 FromQuaternion(Vector3D center, double x, double y, double z, double w, Vector3D halfExtents)
+        {
+            Num.Finite(center, nameof(center));
+            CheckHalfExtents(halfExtents);
+            double n2 = x * x + y * y + z * z + w * w;
+            if (!double.IsFinite(n2) || n2 == 0)
+                throw new ArgumentException("rotation must be a finite, non-zero quaternion.", "rotation");
+            double s = 2 / n2; // folds the normalisation into the usual 2·q·q products
+            double xx = x * x * s, yy = y * y * s, zz = z * z * s;
+            double xy = x * y * s, xz = x * z * s, yz = y * z * s;
+            double wx = w * x * s, wy = w * y * s, wz = w * z * s;
+            return new Obb3(center,
+                new Vector3D(1 - yy - zz, xy + wz, xz - wy),
+                new Vector3D(xy - wz, 1 - xx - zz, yz + wx),
+                new Vector3D(xz + wy, yz - wx, 1 - xx - yy),
+                halfExtents, true);
+        }
+
+        /// <summary>
+        /// The paper's form: the box's corners and its three face normals (<paramref name="axisX"/>, <paramref name="axisY"/>, <paramref name="axisZ"/>). The result is the smallest box with
+        /// those axes containing every corner, which is the box itself when the corners are a box's corners.
+        /// </summary>
+        public static Obb3 FromCorners(ReadOnlySpan<Vector3D> corners, Vector3D axisX, Vector3D axisY, Vector3D axisZ)
+        {
+            if (corners.Length != 8) throw new ArgumentException($"a box has 8 corners (got {corners.Length}).", nameof(corners));
+            var frame = new Obb3(default, axisX, axisY, axisZ, default);
+            var sum = default(Vector3D);
+            for (int i = 0; i < 8; i++)
+            {
+                Num.Finite(corners[i], nameof(corners));
+                sum += corners[i];
+            }
+            var center = sum * 0.125;
+            double hx = 0, hy = 0, hz = 0;
+            for (int i = 0; i < 8; i++)
+            {
+                var d = corners[i] - center;
+                hx = Math.Max(hx, Math.Abs(Vector3D.Dot(d, frame._x)));
+                hy = Math.Max(hy, Math.Abs(Vector3D.Dot(d, frame._y)));
+                hz = Math.Max(hz, Math.Abs(Vector3D.Dot(d, frame._z)));
+            }
+            return new Obb3(center, frame._x, frame._y, frame._z, new Vector3D(hx, hy, hz), true);
+        }
+
+        internal Box ToBox() => new Box(Center, AxisX, AxisY, AxisZ, -HalfExtents, HalfExtents, false);
+
+        internal static void CheckHalfExtents(Vector3D h)
+        {
+            Num.Finite(h, "halfExtents");
+            if (h.X < 0 || h.Y < 0 || h.Z < 0)
+                throw new ArgumentException($"halfExtents must be non-negative (got {h}).", "halfExtents");
+        }
+
+        internal static void CheckUnit(Vector3D a, string name)
+        {
+            Num.Finite(a, name);
+            if (!(Math.Abs(a.LengthSquared - 1) <= AxisTolerance))
+                throw new ArgumentException($"{name} must be a unit vector within {AxisTolerance} (|a|² = {a.LengthSquared:R}).", name);
+        }
+
+        private static void CheckOrthogonal(Vector3D a, Vector3D b, string name)
+        {
+            if (!(Math.Abs(Vector3D.Dot(a, b)) <= AxisTolerance))
+                throw new ArgumentException($"{name} must be orthogonal to the other axes within {AxisTolerance}.", name);
+        }
+    }
+}

@@ -1,0 +1,42 @@
+// Copied from src/ProximityLib/Pairs/AabbAabb.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System.Numerics;
+using Dbl = ProximityLib.Double;
+
+namespace ProximityLib.Double
+{
+    public static partial class ClosestDistance
+    {
+        /// <summary>Closest distance between an AABB and an AABB (3D): negative when overlapping (least per-axis overlap); shared intervals put the witnesses at their middle. Algorithm: per-axis interval gaps (paper Eq. 18).</summary>
+        public static DistanceResult3 Between(Aabb3 a, Aabb3 b) => Kernels.AabbAabb(a.Min, a.Max, b.Min, b.Max, false);
+        /// <summary>Closest distance between an AABB and an AABB (2D): negative when overlapping (least per-axis overlap); shared intervals put the witnesses at their middle. Algorithm: per-axis interval gaps (paper Eq. 18).</summary>
+        public static DistanceResult2 Between(Aabb2 a, Aabb2 b) => (Kernels.AabbAabb(a.Min.To3(), a.Max.To3(), b.Min.To3(), b.Max.To3(), true)).To2();
+    }
+
+    public static partial class ProximityQuery
+    {
+        /// <summary>Whether an AABB and an AABB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
+        public static bool Overlaps(Aabb3 a, Aabb3 b) => Kernels.AabbAabbOverlaps(a.Min, a.Max, b.Min, b.Max);
+        /// <summary>Whether an AABB and an AABB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
+        public static bool Overlaps(Aabb2 a, Aabb2 b) => Kernels.AabbAabbOverlaps(a.Min.To3(), a.Max.To3(), b.Min.To3(), b.Max.To3());
+    }
+}
+
+namespace ProximityLib
+{
+    public static partial class ClosestDistance
+    {
+        /// <summary>Closest distance between an AABB and an AABB (3D), computed in double: negative when overlapping (least per-axis overlap); shared intervals put the witnesses at their middle.</summary>
+        public static DistanceResult3 Between(Aabb3 a, Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Between(a.Inner, b.Inner));
+        /// <summary>Closest distance between an AABB and an AABB (2D), computed in double: negative when overlapping (least per-axis overlap); shared intervals put the witnesses at their middle.</summary>
+        public static DistanceResult2 Between(Aabb2 a, Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Between(a.Inner, b.Inner));
+    }
+
+    public static partial class ProximityQuery
+    {
+        /// <summary>Whether an AABB and an AABB (3D) touch or overlap.</summary>
+        public static bool Overlaps(Aabb3 a, Aabb3 b) => Dbl.ProximityQuery.Overlaps(a.Inner, b.Inner);
+        /// <summary>Whether an AABB and an AABB (2D) touch or overlap.</summary>
+        public static bool Overlaps(Aabb2 a, Aabb2 b) => Dbl.ProximityQuery.Overlaps(a.Inner, b.Inner);
+    }
+}

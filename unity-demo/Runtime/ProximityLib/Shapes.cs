@@ -1,0 +1,172 @@
+// Copied from src/ProximityLib/Shapes.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System;
+using System.Numerics;
+using Dbl = ProximityLib.Double;
+
+// The float shapes hold their validated double form, so a float query runs the one double algorithm with no
+// conversion or re-validation per call; the public members read back in float.
+namespace ProximityLib
+{
+    /// <summary>A closed 3D line segment from <see cref="Start"/> (parameter 0) to <see cref="End"/> (parameter 1); may have zero length.</summary>
+    public readonly struct Segment3
+    {
+        internal readonly Dbl.Segment3 Inner;
+        /// <summary>Creates a segment; throws <see cref="ArgumentException"/> on non-finite endpoints.</summary>
+        public Segment3(Vector3 start, Vector3 end) { Inner = new Dbl.Segment3(start, end); }
+        /// <summary>The endpoint at parameter 0.</summary>
+        public Vector3 Start => (Vector3)Inner.Start;
+        /// <summary>The endpoint at parameter 1.</summary>
+        public Vector3 End => (Vector3)Inner.End;
+        /// <summary>The point at parameter t (0 = Start, 1 = End).</summary>
+        public Vector3 PointAt(float t) => (Vector3)Inner.PointAt(t);
+        /// <summary>The same segment in double precision.</summary>
+        public static implicit operator Dbl.Segment3(Segment3 s) => s.Inner;
+    }
+
+    /// <summary>A closed 2D line segment from <see cref="Start"/> (parameter 0) to <see cref="End"/> (parameter 1); may have zero length.</summary>
+    public readonly struct Segment2
+    {
+        internal readonly Dbl.Segment2 Inner;
+        /// <summary>Creates a segment; throws <see cref="ArgumentException"/> on non-finite endpoints.</summary>
+        public Segment2(Vector2 start, Vector2 end) { Inner = new Dbl.Segment2(start, end); }
+        /// <summary>The endpoint at parameter 0.</summary>
+        public Vector2 Start => (Vector2)Inner.Start;
+        /// <summary>The endpoint at parameter 1.</summary>
+        public Vector2 End => (Vector2)Inner.End;
+        /// <summary>The point at parameter t (0 = Start, 1 = End).</summary>
+        public Vector2 PointAt(float t) => (Vector2)Inner.PointAt(t);
+        /// <summary>The same segment in double precision.</summary>
+        public static implicit operator Dbl.Segment2(Segment2 s) => s.Inner;
+    }
+
+    /// <summary>A closed solid sphere; radius 0 is a point.</summary>
+    public readonly struct Sphere
+    {
+        internal readonly Dbl.Sphere Inner;
+        /// <summary>Creates a sphere; throws <see cref="ArgumentException"/> on a non-finite center or a negative or non-finite radius.</summary>
+        public Sphere(Vector3 center, float radius) { Inner = new Dbl.Sphere(center, radius); }
+        /// <summary>The center.</summary>
+        public Vector3 Center => (Vector3)Inner.Center;
+        /// <summary>The radius.</summary>
+        public float Radius => (float)Inner.Radius;
+        /// <summary>The same sphere in double precision.</summary>
+        public static implicit operator Dbl.Sphere(Sphere s) => s.Inner;
+    }
+
+    /// <summary>A closed solid disc (the paper's circle); radius 0 is a point.</summary>
+    public readonly struct Circle
+    {
+        internal readonly Dbl.Circle Inner;
+        /// <summary>Creates a circle; throws <see cref="ArgumentException"/> on a non-finite center or a negative or non-finite radius.</summary>
+        public Circle(Vector2 center, float radius) { Inner = new Dbl.Circle(center, radius); }
+        /// <summary>The center.</summary>
+        public Vector2 Center => (Vector2)Inner.Center;
+        /// <summary>The radius.</summary>
+        public float Radius => (float)Inner.Radius;
+        /// <summary>The same circle in double precision.</summary>
+        public static implicit operator Dbl.Circle(Circle c) => c.Inner;
+    }
+
+    /// <summary>A closed solid axis-aligned box [Min, Max]; zero extents are allowed.</summary>
+    public readonly struct Aabb3
+    {
+        internal readonly Dbl.Aabb3 Inner;
+        private Aabb3(Dbl.Aabb3 inner) { Inner = inner; }
+        /// <summary>Creates a box; throws <see cref="ArgumentException"/> on non-finite corners or Min greater than Max on any axis.</summary>
+        public Aabb3(Vector3 min, Vector3 max) { Inner = new Dbl.Aabb3(min, max); }
+        /// <summary>The paper's form: minimum corner plus length (X), height (Y) and width (Z), all non-negative.</summary>
+        public static Aabb3 FromOrigin(Vector3 origin, float length, float height, float width) =>
+            new Aabb3(Dbl.Aabb3.FromOrigin(origin, length, height, width));
+        /// <summary>A box from its center and non-negative half-extents.</summary>
+        public static Aabb3 FromCenter(Vector3 center, Vector3 halfExtents) => new Aabb3(Dbl.Aabb3.FromCenter(center, halfExtents));
+        /// <summary>The minimum corner.</summary>
+        public Vector3 Min => (Vector3)Inner.Min;
+        /// <summary>The maximum corner.</summary>
+        public Vector3 Max => (Vector3)Inner.Max;
+        /// <summary>The same box in double precision.</summary>
+        public static implicit operator Dbl.Aabb3(Aabb3 b) => b.Inner;
+    }
+
+    /// <summary>A closed solid axis-aligned rectangle [Min, Max]; zero extents are allowed.</summary>
+    public readonly struct Aabb2
+    {
+        internal readonly Dbl.Aabb2 Inner;
+        private Aabb2(Dbl.Aabb2 inner) { Inner = inner; }
+        /// <summary>Creates a rectangle; throws <see cref="ArgumentException"/> on non-finite corners or Min greater than Max on any axis.</summary>
+        public Aabb2(Vector2 min, Vector2 max) { Inner = new Dbl.Aabb2(min, max); }
+        /// <summary>The paper's form: minimum corner plus length (X) and height (Y), both non-negative.</summary>
+        public static Aabb2 FromOrigin(Vector2 origin, float length, float height) => new Aabb2(Dbl.Aabb2.FromOrigin(origin, length, height));
+        /// <summary>A rectangle from its center and non-negative half-extents.</summary>
+        public static Aabb2 FromCenter(Vector2 center, Vector2 halfExtents) => new Aabb2(Dbl.Aabb2.FromCenter(center, halfExtents));
+        /// <summary>The minimum corner.</summary>
+        public Vector2 Min => (Vector2)Inner.Min;
+        /// <summary>The maximum corner.</summary>
+        public Vector2 Max => (Vector2)Inner.Max;
+        /// <summary>The same rectangle in double precision.</summary>
+        public static implicit operator Dbl.Aabb2(Aabb2 b) => b.Inner;
+    }
+
+    /// <summary>A closed solid oriented box; see <see cref="Dbl.Obb3"/>. Axes are kept orthonormal in double.</summary>
+    public readonly struct Obb3
+    {
+        internal readonly Dbl.Obb3 Inner;
+        private Obb3(Dbl.Obb3 inner) { Inner = inner; }
+        /// <summary>Creates a box rotated by a quaternion (normalised here; it must be finite and non-zero).</summary>
+        public Obb3(Vector3 center, Quaternion rotation, Vector3 halfExtents) { Inner = new Dbl.Obb3(center, rotation, halfExtents); }
+        /// <summary>Creates a box from axes orthonormal within <see cref="Dbl.Obb3.AxisTolerance"/>.</summary>
+        public Obb3(Vector3 center, Vector3 axisX, Vector3 axisY, Vector3 axisZ, Vector3 halfExtents)
+        {
+            Inner = new Dbl.Obb3(center, axisX, axisY, axisZ, halfExtents);
+        }
+        /// <summary>The paper's form: eight corners and the three face normals; the smallest such box containing the corners.</summary>
+        public static Obb3 FromCorners(ReadOnlySpan<Vector3> corners, Vector3 axisX, Vector3 axisY, Vector3 axisZ)
+        {
+            if (corners.Length != 8) throw new ArgumentException($"a box has 8 corners (got {corners.Length}).", nameof(corners));
+            Span<Dbl.Vector3D> wide = stackalloc Dbl.Vector3D[8];
+            for (int i = 0; i < 8; i++) wide[i] = corners[i];
+            return new Obb3(Dbl.Obb3.FromCorners(wide, axisX, axisY, axisZ));
+        }
+        /// <summary>The center.</summary>
+        public Vector3 Center => (Vector3)Inner.Center;
+        /// <summary>The first box axis.</summary>
+        public Vector3 AxisX => (Vector3)Inner.AxisX;
+        /// <summary>The second box axis.</summary>
+        public Vector3 AxisY => (Vector3)Inner.AxisY;
+        /// <summary>The third box axis.</summary>
+        public Vector3 AxisZ => (Vector3)Inner.AxisZ;
+        /// <summary>The half-extents along the three axes.</summary>
+        public Vector3 HalfExtents => (Vector3)Inner.HalfExtents;
+        /// <summary>The same box in double precision.</summary>
+        public static implicit operator Dbl.Obb3(Obb3 b) => b.Inner;
+    }
+
+    /// <summary>A closed solid oriented rectangle; see <see cref="Dbl.Obb2"/>.</summary>
+    public readonly struct Obb2
+    {
+        internal readonly Dbl.Obb2 Inner;
+        private Obb2(Dbl.Obb2 inner) { Inner = inner; }
+        /// <summary>Creates a box from a unit axis (within <see cref="Dbl.Obb3.AxisTolerance"/>).</summary>
+        public Obb2(Vector2 center, Vector2 axisX, Vector2 halfExtents) { Inner = new Dbl.Obb2(center, axisX, halfExtents); }
+        /// <summary>Creates a box rotated counter-clockwise by <paramref name="angle"/> radians.</summary>
+        public Obb2(Vector2 center, float angle, Vector2 halfExtents) { Inner = new Dbl.Obb2(center, (double)angle, halfExtents); }
+        /// <summary>The paper's form: four corners and the two edge normals; the smallest such box containing the corners.</summary>
+        public static Obb2 FromCorners(ReadOnlySpan<Vector2> corners, Vector2 axisX, Vector2 axisY)
+        {
+            if (corners.Length != 4) throw new ArgumentException($"a rectangle has 4 corners (got {corners.Length}).", nameof(corners));
+            Span<Dbl.Vector2D> wide = stackalloc Dbl.Vector2D[4];
+            for (int i = 0; i < 4; i++) wide[i] = corners[i];
+            return new Obb2(Dbl.Obb2.FromCorners(wide, axisX, axisY));
+        }
+        /// <summary>The center.</summary>
+        public Vector2 Center => (Vector2)Inner.Center;
+        /// <summary>The first box axis.</summary>
+        public Vector2 AxisX => (Vector2)Inner.AxisX;
+        /// <summary>The second box axis (AxisX turned +90°).</summary>
+        public Vector2 AxisY => (Vector2)Inner.AxisY;
+        /// <summary>The half-extents along the two axes.</summary>
+        public Vector2 HalfExtents => (Vector2)Inner.HalfExtents;
+        /// <summary>The same box in double precision.</summary>
+        public static implicit operator Dbl.Obb2(Obb2 b) => b.Inner;
+    }
+}
