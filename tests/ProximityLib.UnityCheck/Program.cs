@@ -67,7 +67,7 @@ namespace ProximityUnityCheck
             _root = Path.Combine(repo, "unity-demo");
         }
 
-        /// <summary>Every generated file of the package (relative path → content): the source copies and their asmdefs.</summary>
+        /// <summary>Every generated file of the package (relative path → content): the source copies, their asmdefs, the license.</summary>
         private SortedDictionary<string, string> Generated()
         {
             var files = new SortedDictionary<string, string>(StringComparer.Ordinal);
@@ -85,6 +85,7 @@ namespace ProximityUnityCheck
                 }
                 files[$"{copy.To}/{copy.Assembly}.asmdef"] = Asmdef(copy.Assembly, copy.References);
             }
+            files["LICENSE.md"] = File.ReadAllText(Path.Combine(_repo, "LICENSE")).Replace("\r\n", "\n");
             return files;
         }
 
