@@ -1,5 +1,6 @@
 using System;
 using System.Globalization;
+using System.IO;
 using System.Linq;
 using System.Numerics;
 using ProximityLib;
@@ -14,7 +15,8 @@ CultureInfo.CurrentCulture = CultureInfo.InvariantCulture;
 if (args.Length > 0 && (args[0] == "--help" || args[0] == "-h"))
 {
     Console.WriteLine("usage: ProximityLib.Demo                         print a few sample queries");
-    Console.WriteLine("       ProximityLib.Demo picker [--proximity] A B  closest distance (or overlap verdict) of two shapes");
+    Console.WriteLine("       ProximityLib.Demo picker [--proximity] [--svg FILE] A B  closest distance (or overlap verdict) of two shapes;");
+    Console.WriteLine("                                     --svg also draws them as the picker shows them (view along +z)");
     Console.WriteLine("shapes: point:x,y[,z]  segment:x1,y1[,z1],x2,y2[,z2]  circle:x,y,r  sphere:x,y,z,r");
     Console.WriteLine("        aabb:minX,minY[,minZ],maxX,maxY[,maxZ]  obb:cx,cy,angle,hx,hy  obb:cx,cy,cz,qx,qy,qz,qw,hx,hy,hz");
     return 0;
@@ -54,7 +56,9 @@ static void Print(string name, DistanceResult3 r, bool overlaps) =>
 static int Picker(string[] args)
 {
     bool proximity = args.Contains("--proximity");
-    var specs = args.Where(a => a != "--proximity").ToArray();
+    int svgAt = Array.IndexOf(args, "--svg");
+    string? svg = svgAt >= 0 && svgAt + 1 < args.Length ? args[svgAt + 1] : null;
+    var specs = args.Where((a, i) => a != "--proximity" && (svgAt < 0 || (i != svgAt && i != svgAt + 1))).ToArray();
     if (specs.Length != 2)
     {
         Console.Error.WriteLine("error: picker needs two shapes, e.g. picker sphere:0,0,0,1 aabb:2,0,0,3,1,1");
@@ -77,12 +81,27 @@ static int Picker(string[] args)
         return 2;
     }
     bool overlaps = ProximityQuery.Overlaps((dynamic)first, (dynamic)second);
+    dynamic r = ClosestDistance.Between((dynamic)first, (dynamic)second);
+    if (svg != null)
+    {
+        Vector3 To3(dynamic p) => p is Vector2 v ? new Vector3(v, 0) : (Vector3)p;
+        var view = new PickerView(proximity ? PickerMode.ProximityQuery : PickerMode.ClosestDistance, (float)r.Distance, To3(r.PointA), To3(r.PointB), overlaps);
+        try
+        {
+            File.WriteAllText(svg, PickerSvg.Render(first, second, view));
+        }
+        catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+        {
+            Console.Error.WriteLine($"error: cannot write '{svg}': {e.Message}");
+            return 2;
+        }
+        Console.Error.WriteLine($"wrote {svg}");
+    }
     if (proximity)
     {
         Console.WriteLine(overlaps ? "Colliding" : "Not colliding");
         return 0;
     }
-    dynamic r = ClosestDistance.Between((dynamic)first, (dynamic)second);
     Console.WriteLine($"Minimum distance: {(float)r.Distance:0.######}");
     Console.WriteLine($"closest point on A: {r.PointA}");
     Console.WriteLine($"closest point on B: {r.PointB}");

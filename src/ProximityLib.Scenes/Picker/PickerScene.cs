@@ -16,7 +16,8 @@ namespace ProximityLib.Scenes.Picker
     /// <summary>What the picker shows after each change.</summary>
     public readonly struct PickerView
     {
-        internal PickerView(PickerMode mode, float distance, Vector3 pointA, Vector3 pointB, bool colliding)
+        /// <summary>A view from a query's answer: for drawing shapes that are not picker primitives (see <see cref="PickerSvg"/>).</summary>
+        public PickerView(PickerMode mode, float distance, Vector3 pointA, Vector3 pointB, bool colliding)
         {
             Mode = mode; Distance = distance; PointA = pointA; PointB = pointB; Colliding = colliding;
         }

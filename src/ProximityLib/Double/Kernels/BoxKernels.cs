@@ -117,6 +117,16 @@ namespace ProximityLib.Double
         /// </summary>
         public static bool BoxBoxOverlaps(in Box a, in Box b)
         {
+#if NET
+            // The same test on AVX2 lanes where the hardware has them (BoxKernels.Vector.cs); planar boxes need 4 axes only.
+            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported && !(a.Planar || b.Planar)) return BoxBoxOverlapsVector(a, b);
+#endif
+            return BoxBoxOverlapsScalar(a, b);
+        }
+
+        /// <summary>The scalar form of <see cref="BoxBoxOverlaps"/>: the only one on netstandard2.1 (Unity) and for planar boxes.</summary>
+        internal static bool BoxBoxOverlapsScalar(in Box a, in Box b)
+        {
             var tw = (b.Origin - a.Origin) + b.ToWorldOffset(b.LocalCenter) - a.ToWorldOffset(a.LocalCenter);
             double tx = Vector3D.Dot(tw, a.X), ty = Vector3D.Dot(tw, a.Y), tz = Vector3D.Dot(tw, a.Z);
             // r_ij = a_i · b_j: B's axes as columns in A's frame.
