@@ -18,13 +18,14 @@ int reportAt = Array.IndexOf(args, "--report");
 string? reportDir = reportAt >= 0 && reportAt + 1 < args.Length ? args[reportAt + 1] : null;
 var rest = args.Where((a, i) => a != "--quick" && (reportAt < 0 || (i != reportAt && i != reportAt + 1))).ToArray();
 
-// In process, short iterations and no overhead stage keep the full suite (~400 benchmarks) to minutes on a 2-core
-// machine: each invocation is already 1024 queries, so the loop overhead is a small, shared constant, and the ratios
-// between methods in one run are what the report is about.
+// In process with no overhead stage: each invocation is already 1024 queries, so the loop overhead is a small, shared
+// constant, and the ratios between methods in one run are what the report is about. 15 iterations of 100 ms keep the
+// full suite (~400 benchmarks) to ~25 minutes on a 2-core machine; with 5 × 50 ms, medians moved by up to ±40% between
+// runs on this shared VM.
 var job = quick
     ? Job.Dry.WithToolchain(InProcessNoEmitToolchain.Instance)
-    : Job.Default.WithEvaluateOverhead(false).WithIterationTime(Perfolizer.Horology.TimeInterval.FromMilliseconds(50))
-        .WithWarmupCount(3).WithIterationCount(5).WithToolchain(InProcessNoEmitToolchain.Instance).WithId("InProcess-tiered-5x50ms");
+    : Job.Default.WithEvaluateOverhead(false).WithIterationTime(Perfolizer.Horology.TimeInterval.FromMilliseconds(100))
+        .WithWarmupCount(5).WithIterationCount(15).WithToolchain(InProcessNoEmitToolchain.Instance).WithId("InProcess-tiered-15x100ms");
 var config = ManualConfig.Create(DefaultConfig.Instance).AddJob(job).WithOptions(ConfigOptions.DisableLogFile);
 
 var pairTypes = typeof(PairBenchmarks<,,>).GetCustomAttributes(typeof(BenchmarkDotNet.Attributes.GenericTypeArgumentsAttribute), false)
