@@ -103,17 +103,18 @@ namespace ProximityLib.Demo
             if (reported) Console.Error.WriteLine($"\r  frames: {frames}/{frames}");
 
             w.WriteLine($"  cost per frame: {FrameCost(sim):0} ns (placing the foot, 3 distance and 3 overlap queries; measured here over repeated cycles)");
-            string csvPath = Path.Combine(outDir, "gait.csv"), pngPath = Path.Combine(outDir, "gait.png");
+            string csvPath = Path.Combine(outDir, "gait.csv"), pngPath = Path.Combine(outDir, "gait.png"), svgPath = Path.Combine(outDir, "gait-poses.svg");
             try
             {
                 File.WriteAllText(csvPath, csv.ToString());
                 GaitPlot.Save(pngPath, percent, dist, contact, ev);
+                File.WriteAllText(svgPath, GaitSvg.Render(sim));
             }
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
                 return Fail($"cannot write to '{outDir}': {e.Message}");
             }
-            w.WriteLine($"  wrote {csvPath} ({frames} frames) and {pngPath}");
+            w.WriteLine($"  wrote {csvPath} ({frames} frames), {pngPath} and {svgPath}");
             return 0;
         }
 

@@ -31,10 +31,10 @@ var config = ManualConfig.Create(DefaultConfig.Instance).AddJob(job).WithOptions
 var pairTypes = typeof(PairBenchmarks<,,>).GetCustomAttributes(typeof(BenchmarkDotNet.Attributes.GenericTypeArgumentsAttribute), false)
     .Cast<BenchmarkDotNet.Attributes.GenericTypeArgumentsAttribute>()
     .Select(a => typeof(PairBenchmarks<,,>).MakeGenericType(a.GenericTypeArguments)).ToList();
-var all = pairTypes.Append(typeof(Baselines)).Append(typeof(BatchBenchmarks)).ToArray();
+var all = pairTypes.Append(typeof(Baselines)).Append(typeof(BatchBenchmarks)).Append(typeof(GaitFrameBenchmark)).ToArray();
 
 var summaries = rest.Length > 0
-    ? BenchmarkSwitcher.FromTypes(new[] { typeof(PairBenchmarks<,,>), typeof(Baselines), typeof(BatchBenchmarks) }).Run(rest, config).ToArray()
+    ? BenchmarkSwitcher.FromTypes(new[] { typeof(PairBenchmarks<,,>), typeof(Baselines), typeof(BatchBenchmarks), typeof(GaitFrameBenchmark) }).Run(rest, config).ToArray()
     : all.Select(t => BenchmarkRunner.Run(t, config)).ToArray();
 
 int ran = summaries.Sum(s => s.Reports.Count(r => r.Success));

@@ -162,17 +162,23 @@ namespace ProximityLib.Scenes.Gait
             return Foot.PoseAt(sample, _beltSpeed * (sample - _strikeSample) / GaitTrial.SampleRate);
         }
 
-        /// <summary>Frame k of the cycle: its pose, three distance queries and three overlap queries; allocates nothing.</summary>
+        /// <summary>Frame k of the cycle (k / FrameCount of the way from heel strike); allocates nothing.</summary>
         public GaitFrame Frame(int k)
         {
             if ((uint)k >= (uint)FrameCount) throw new ArgumentOutOfRangeException(nameof(k), k, $"frames are 0..{FrameCount - 1}.");
-            double percent = 100.0 * k / FrameCount;
-            var pose = PoseAt(percent);
+            return Evaluate(100.0 * k / FrameCount);
+        }
+
+        /// <summary>The scene at a point of the cycle (percent, wrapped): its pose, three distance and three overlap queries; allocates nothing.</summary>
+        public GaitFrame Evaluate(double percent)
+        {
+            double p = percent - 100 * Math.Floor(percent / 100);
+            var pose = PoseAt(p);
             var distances = new Vector3(
                 ClosestDistance.Between(pose.Heel, Ground).Distance,
                 ClosestDistance.Between(pose.Sole, Ground).Distance,
                 ClosestDistance.Between(pose.Toe, Ground).Distance);
-            return new GaitFrame(percent, percent / 100 * StrideDuration, pose, distances,
+            return new GaitFrame(p, p / 100 * StrideDuration, pose, distances,
                 ProximityQuery.Overlaps(pose.Heel, _contactGround),
                 ProximityQuery.Overlaps(pose.Sole, _contactGround),
                 ProximityQuery.Overlaps(pose.Toe, _contactGround));

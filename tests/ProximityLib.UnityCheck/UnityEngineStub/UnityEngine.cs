@@ -84,6 +84,7 @@ namespace UnityEngine
     public sealed class Shader : Object { public static Shader Find(string name) => throw new NotSupportedException(); }
 
     public static class Input { public static bool GetKeyDown(KeyCode key) => false; }
+    public static class Time { public static float deltaTime => 0; }
     public static class Screen { public static int width => 0; public static int height => 0; }
 
     public static class Mathf
@@ -123,6 +124,7 @@ namespace UnityEngine
         public Quaternion(float x, float y, float z, float w) { this.x = x; this.y = y; this.z = z; this.w = w; }
         public static Quaternion identity => new Quaternion(0, 0, 0, 1);
         public static Quaternion Euler(float x, float y, float z) => identity;
+        public static Quaternion LookRotation(Vector3 forward, Vector3 upwards) => identity;
         public static Vector3 operator *(Quaternion rotation, Vector3 point) => point;
     }
 

@@ -157,3 +157,26 @@ namespace ProximityTests.Scenes.Gait
         }
     }
 }
+
+namespace ProximityTests.Scenes.Gait
+{
+    public class GaitSvgTests
+    {
+        [Test]
+        public void DrawsTheFootAtEachEventWithThePartsInContactInRed()
+        {
+            var sim = new GaitSimulation();
+            string svg = GaitSvg.Render(sim);
+            foreach (var label in new[] { "heel strike", "foot flat", "heel off", "toe off", "mid swing" })
+                Assert.That(svg, Does.Contain($">{label}<"));
+            Assert.That(System.Text.RegularExpressions.Regex.Matches(svg, "<circle").Count, Is.EqualTo(10), "two spheres per instant");
+            Assert.That(System.Text.RegularExpressions.Regex.Matches(svg, "<polygon").Count, Is.EqualTo(5), "one sole per instant");
+            // Red exactly where the model says contact: heel strike (heel), foot flat (all three), heel off (sole, toe).
+            int red = System.Text.RegularExpressions.Regex.Matches(svg, "#d62728").Count;
+            int expected = new[] { 0.0, sim.Events.FootFlat, sim.Events.HeelOff, sim.Events.ToeOff, 81.0 }
+                .Select(sim.Evaluate).Sum(f => (f.HeelContact ? 1 : 0) + (f.SoleContact ? 1 : 0) + (f.ToeContact ? 1 : 0));
+            Assert.That(red, Is.EqualTo(expected));
+            Assert.That(() => GaitSvg.Render(null!), Throws.ArgumentNullException);
+        }
+    }
+}
