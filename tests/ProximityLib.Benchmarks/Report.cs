@@ -67,7 +67,8 @@ namespace ProximityBenchmarks
             {
                 double Ns(string d) => g.FirstOrDefault(r => r.Distribution == d)?.Ns ?? double.NaN;
                 double? e = MaxE(accuracy, g.Key.Query, g.Key.Op, g.Key.Method);
-                md.AppendLine($"| {g.Key.Query} {g.Key.Op} | {g.Key.Method} | {Ns("apart"):0.00} | {Ns("overlapping"):0.00} | {Ns("mixed"):0.00} | " +
+                string Cell(string d) => double.IsNaN(Ns(d)) ? "—" : Ns(d).ToString("0.00", CultureInfo.InvariantCulture);
+                md.AppendLine($"| {g.Key.Query} {g.Key.Op} | {g.Key.Method} | {Cell("apart")} | {Cell("overlapping")} | {Cell("mixed")} | " +
                               $"{g.Max(r => r.Bytes):0} | {(e.HasValue ? e.Value.ToString("0.00") : "—")} |");
                 if (e.HasValue && g.Key.Op == "distance")
                 {
