@@ -14,7 +14,8 @@ namespace ProximityLib.Double
         /// normalised and both boxes are projected on it honestly (no orthonormality shortcuts), so a noisy,
         /// near-degenerate cross axis can only overestimate the overlap and never wins wrongly. Apart: the closest pair
         /// always involves an edge of A or of B (a face–face contact region is bounded by edges), so the minimum of
-        /// the edge–box distances is exact. Overlapping: A moved by the minimum translation just touches B, and the
+        /// the edge–box distances is exact; an edge whose gap along the other box's axes already exceeds the best pair
+        /// cannot win and is skipped. Overlapping: A moved by the minimum translation just touches B, and the
         /// touching pair found the same way, moved back, realises the penetration.
         /// </summary>
         public static DistanceResult3 BoxBox(in Box boxA, in Box boxB)
@@ -22,6 +23,13 @@ namespace ProximityLib.Double
             var shift = boxA.Origin;
             var a = boxA.Translated(-shift);
             var b = boxB.Translated(-shift);
+            Vector3D onA, onB;
+            // Apart (by the overlap query's own verdict, so the two agree): the depth search below has nothing to add.
+            if (!BoxBoxOverlaps(a, b))
+            {
+                double gap = EdgesApart(a, b, out onA, out onB);
+                return new DistanceResult3(Math.Sqrt(gap), gap, onA + shift, onB + shift, 0, 0);
+            }
             var ca = a.Origin + a.ToWorldOffset(a.LocalCenter);
             var cb = b.Origin + b.ToWorldOffset(b.LocalCenter);
             var ha = a.Half;
@@ -45,7 +53,7 @@ namespace ProximityLib.Double
 
             if (depth < 0) push = default;
             var moved = a.Translated(push);
-            double g = EdgesApart(moved, b, out var onA, out var onB);
+            double g = EdgesApart(moved, b, out onA, out onB);
             onA = onA - push + shift;
             onB += shift;
             if (depth < 0) return new DistanceResult3(Math.Sqrt(g), g, onA, onB, 0, 0);
@@ -85,21 +93,30 @@ namespace ProximityLib.Double
             var lo = edges.Lo;
             var hi = edges.Hi;
             bool point = lo == hi;
+            var center = other.Origin + other.ToWorldOffset(other.LocalCenter);
+            var half = other.Half;
+            // The eight corners once (bit i of the index picks Hi on axis i); each edge joins two of them.
+            Span<Vector3D> corner = stackalloc Vector3D[8];
+            for (int c = 0; c < 8; c++)
+                corner[c] = edges.Origin + edges.ToWorldOffset(new Vector3D((c & 1) != 0 ? hi.X : lo.X, (c & 2) != 0 ? hi.Y : lo.Y, (c & 4) != 0 ? hi.Z : lo.Z));
             for (int i = 0; i < 3; i++)
             {
                 // A zero-length edge is a vertex, already an endpoint of another edge (unless the box is a point).
                 if (Vec.Get(lo, i) == Vec.Get(hi, i) && !(point && i == 0)) continue;
                 int j = (i + 1) % 3, k = (i + 2) % 3;
-                for (int sj = 0; sj < 2; sj++)
+                int nj = Vec.Get(lo, j) == Vec.Get(hi, j) ? 1 : 2, nk = Vec.Get(lo, k) == Vec.Get(hi, k) ? 1 : 2;
+                for (int sj = 0; sj < nj; sj++)
                 {
-                    if (sj == 1 && Vec.Get(lo, j) == Vec.Get(hi, j)) break;
-                    for (int sk = 0; sk < 2; sk++)
+                    for (int sk = 0; sk < nk; sk++)
                     {
-                        if (sk == 1 && Vec.Get(lo, k) == Vec.Get(hi, k)) break;
-                        var start = Vec.With(Vec.With(lo, j, Vec.Get(sj == 0 ? lo : hi, j)), k, Vec.Get(sk == 0 ? lo : hi, k));
-                        var end = Vec.With(start, i, Vec.Get(hi, i));
-                        var p = edges.Origin + edges.ToWorldOffset(start);
-                        var q = edges.Origin + edges.ToWorldOffset(end);
+                        int from = (sj << j) | (sk << k);
+                        var p = corner[from];
+                        var q = corner[from | (1 << i)];
+                        // The gap along any of the other box's axes bounds the edge's distance from below: an edge
+                        // that cannot beat the best pair so far is skipped (with a margin, so rounding never hides a win).
+                        double lb = Math.Max(SlabGap(p, q, center, other.X, half.X),
+                            Math.Max(SlabGap(p, q, center, other.Y, half.Y), SlabGap(p, q, center, other.Z, half.Z)));
+                        if (lb * lb > best * (1 + 1e-9)) continue;
                         double g = SegmentBoxSeparated(p, q, other, out _, out var onEdge, out var onOther);
                         if (g < best)
                         {
@@ -110,6 +127,13 @@ namespace ProximityLib.Double
                     }
                 }
             }
+        }
+
+        /// <summary>How far segment [p, q] lies outside the slab |(x − center)·axis| ≤ half (axis a unit box axis).</summary>
+        private static double SlabGap(Vector3D p, Vector3D q, Vector3D center, Vector3D axis, double half)
+        {
+            double sp = Vector3D.Dot(p - center, axis), sq = Vector3D.Dot(q - center, axis);
+            return Math.Max(0, Math.Max(Math.Min(sp, sq) - half, -half - Math.Max(sp, sq)));
         }
 
         /// <summary>
