@@ -103,6 +103,9 @@ namespace ProximityLib.Demo
             if (reported) Console.Error.WriteLine($"\r  frames: {frames}/{frames}");
 
             w.WriteLine($"  cost per frame: {FrameCost(sim):0} ns (placing the foot, 3 distance and 3 overlap queries; measured here over repeated cycles)");
+#if DEBUG
+            w.WriteLine("  (this is a Debug build, which is unoptimised: run with -c Release for representative timings)");
+#endif
             string csvPath = Path.Combine(outDir, "gait.csv"), pngPath = Path.Combine(outDir, "gait.png"), svgPath = Path.Combine(outDir, "gait-poses.svg");
             try
             {
