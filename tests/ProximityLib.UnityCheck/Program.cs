@@ -145,13 +145,14 @@ namespace ProximityUnityCheck
         public List<string> Check()
         {
             var problems = new List<string>();
-            foreach (var (rel, content) in Generated())
+            var generated = Generated();
+            foreach (var (rel, content) in generated)
             {
                 string path = Path.Combine(_root, rel);
                 if (!File.Exists(path)) problems.Add($"{rel} is missing from the source copy");
                 else if (File.ReadAllText(path) != content) problems.Add($"{rel} differs from what sync produces from src/");
             }
-            var expected = new HashSet<string>(Generated().Keys, StringComparer.Ordinal);
+            var expected = new HashSet<string>(generated.Keys, StringComparer.Ordinal);
             foreach (var copy in Copies)
             {
                 string dir = Path.Combine(_root, copy.To);
@@ -229,12 +230,13 @@ namespace ProximityUnityCheck
         {
             var asmdefs = Directory.EnumerateFiles(_root, "*.asmdef", SearchOption.AllDirectories).OrderBy(p => p, StringComparer.Ordinal).ToList();
             var folders = asmdefs.Select(Path.GetDirectoryName).ToList();
-            var names = new List<string>();
+            var parsed = asmdefs.Select(a => JsonDocument.Parse(File.ReadAllText(a)).RootElement).ToList();
+            var names = parsed.Select(j => j.GetProperty("name").GetString()!).ToList();
             string stub = Path.Combine(_repo, "tests/ProximityLib.UnityCheck/UnityEngineStub/UnityEngine.csproj");
-            foreach (var asmdef in asmdefs)
+            for (int n = 0; n < asmdefs.Count; n++)
             {
-                var json = JsonDocument.Parse(File.ReadAllText(asmdef)).RootElement;
-                string name = json.GetProperty("name").GetString()!;
+                string asmdef = asmdefs[n], name = names[n];
+                var json = parsed[n];
                 var refs = json.TryGetProperty("references", out var r) ? r.EnumerateArray().Select(e => e.GetString()!).ToList() : new List<string>();
                 bool engine = !(json.TryGetProperty("noEngineReferences", out var ne) && ne.GetBoolean());
                 bool unsafeCode = json.TryGetProperty("allowUnsafeCode", out var au) && au.GetBoolean();
@@ -243,7 +245,6 @@ namespace ProximityUnityCheck
                 var sources = Directory.EnumerateFiles(folder, "*.cs", SearchOption.AllDirectories)
                     .Where(f => folders.Where(d => f.StartsWith(d + Path.DirectorySeparatorChar, StringComparison.Ordinal)).OrderByDescending(d => d!.Length).First() == folder)
                     .OrderBy(f => f, StringComparer.Ordinal).ToList();
-                names.Add(name);
                 var sb = new StringBuilder();
                 sb.AppendLine("<Project Sdk=\"Microsoft.NET.Sdk\">");
                 sb.AppendLine("  <PropertyGroup>");
@@ -259,7 +260,7 @@ namespace ProximityUnityCheck
                 sb.AppendLine("</Project>");
                 Directory.CreateDirectory(Path.Combine(dir, name));
                 File.WriteAllText(Path.Combine(dir, name, name + ".csproj"), sb.ToString());
-                foreach (var reference in refs.Where(x => !asmdefs.Any(a => JsonDocument.Parse(File.ReadAllText(a)).RootElement.GetProperty("name").GetString() == x)))
+                foreach (var reference in refs.Where(x => !names.Contains(x)))
                     yield return $"{Rel(_root, asmdef)} references {reference}, which is not an asmdef of this package";
             }
             Directory.CreateDirectory(Path.Combine(dir, "All"));

@@ -29,6 +29,7 @@ namespace ProximityLib.Unity
         private string _message = "";
         private double _time;
         private Transform? _heel, _sole, _toe, _camera;
+        private Renderer? _heelLook, _soleLook, _toeLook;
         private GaitFrame _frame;
 
         private void Start()
@@ -61,42 +62,43 @@ namespace ProximityLib.Unity
             var g = _sim.Ground;
             ground.transform.position = ((g.Min + g.Max) / 2).ToUnity();
             ground.transform.localScale = (g.Max - g.Min).ToUnity();
-            _heel = Part(PrimitiveType.Sphere, "Heel (sphere)");
-            _sole = Part(PrimitiveType.Cube, "Sole (OBB)");
-            _toe = Part(PrimitiveType.Sphere, "Toe (sphere)");
+            (_heel, _heelLook) = Part(PrimitiveType.Sphere, "Heel (sphere)");
+            (_sole, _soleLook) = Part(PrimitiveType.Cube, "Sole (OBB)");
+            (_toe, _toeLook) = Part(PrimitiveType.Sphere, "Toe (sphere)");
         }
 
-        private static Transform Part(PrimitiveType type, string name)
+        private static (Transform, Renderer) Part(PrimitiveType type, string name)
         {
             var go = GameObject.CreatePrimitive(type);
             go.name = name;
-            return go.transform;
+            return (go.transform, go.GetComponent<Renderer>());
         }
 
         private void Update()
         {
-            if (_sim == null || _heel == null || _sole == null || _toe == null || _camera == null) return;
+            if (_sim == null || _heel == null || _sole == null || _toe == null || _camera == null
+                || _heelLook == null || _soleLook == null || _toeLook == null) return;
             _time += Time.deltaTime * playbackRate;
             double cycles = _time / _sim.StrideDuration;
             _frame = _sim.Evaluate(100 * (cycles - Math.Floor(cycles)));
             // Whole strides already walked move the foot on, so it keeps walking forward instead of jumping back.
             var walked = new Vector3((float)(Math.Floor(cycles) * _sim.StrideLength), 0, 0);
             var pose = _frame.Pose;
-            Place(_heel, pose.Heel, walked, _frame.HeelContact);
-            Place(_toe, pose.Toe, walked, _frame.ToeContact);
+            Place(_heel, _heelLook, pose.Heel, walked, _frame.HeelContact);
+            Place(_toe, _toeLook, pose.Toe, walked, _frame.ToeContact);
             var sole = pose.Sole;
             _sole.position = sole.Center.ToUnity() + walked;
             _sole.rotation = Quaternion.LookRotation(sole.AxisZ.ToUnity(), sole.AxisY.ToUnity());
             _sole.localScale = (sole.HalfExtents * 2).ToUnity();
-            _sole.GetComponent<Renderer>().material.color = _frame.SoleContact ? Touching : Free;
+            _soleLook.material.color = _frame.SoleContact ? Touching : Free;
             _camera.position = new Vector3(_heel.position.x + 0.15f, 0.2f, -1.2f);
         }
 
-        private static void Place(Transform part, Sphere sphere, Vector3 walked, bool contact)
+        private static void Place(Transform part, Renderer look, Sphere sphere, Vector3 walked, bool contact)
         {
             part.position = sphere.Center.ToUnity() + walked;
             part.localScale = Vector3.one * (2 * sphere.Radius);
-            part.GetComponent<Renderer>().material.color = contact ? Touching : Free;
+            look.material.color = contact ? Touching : Free;
         }
 
         private void OnGUI()

@@ -1,5 +1,6 @@
 #nullable enable
 using System;
+using System.Linq;
 using ProximityLib.Scenes.Picker;
 using UnityEngine;
 
@@ -16,6 +17,10 @@ namespace ProximityLib.Unity
         private static readonly Color Orange = new Color(1f, 0.55f, 0f);
         private static readonly Color Idle = new Color(0.75f, 0.8f, 0.85f);
         private static readonly Color Hit = new Color(0.9f, 0.2f, 0.2f);
+        // The sliding list: every kind in 3D, then in 2D, as the scene model names them.
+        private static readonly Primitive[] Choices = new[] { 3, 2 }
+            .SelectMany(d => ((PrimitiveKind[])Enum.GetValues(typeof(PrimitiveKind))).Select(k => new Primitive(k, d, System.Numerics.Vector3.Zero)))
+            .ToArray();
 
         /// <summary>Distance moved per key press.</summary>
         public float moveStep = 0.1f;
@@ -90,25 +95,21 @@ namespace ProximityLib.Unity
             GUILayout.Label($"First: {_scene.First.Name}   Second: {_scene.Second.Name}");
             GUILayout.Label($"Editing: {(_selected == 0 ? "first" : "second")} (Tab)  ·  arrows, PgUp/PgDn move  ·  L/R rotate  ·  +/− scale");
             _scroll = GUILayout.BeginScrollView(_scroll);
-            foreach (int dimension in new[] { 3, 2 })
+            foreach (var choice in Choices)
             {
-                foreach (PrimitiveKind kind in Enum.GetValues(typeof(PrimitiveKind)))
-                {
-                    var sample = new Primitive(kind, dimension, System.Numerics.Vector3.Zero);
-                    GUILayout.BeginHorizontal();
-                    GUILayout.Label(sample.Name, GUILayout.Width(110));
-                    if (GUILayout.Button("first")) SetScene(() => new PickerScene(_scene.Mode, Replace(_scene.First, kind, dimension), _scene.Second));
-                    if (GUILayout.Button("second")) SetScene(() => new PickerScene(_scene.Mode, _scene.First, Replace(_scene.Second, kind, dimension)));
-                    GUILayout.EndHorizontal();
-                }
+                GUILayout.BeginHorizontal();
+                GUILayout.Label(choice.Name, GUILayout.Width(110));
+                if (GUILayout.Button("first")) SetScene(() => new PickerScene(_scene.Mode, Replace(_scene.First, choice), _scene.Second));
+                if (GUILayout.Button("second")) SetScene(() => new PickerScene(_scene.Mode, _scene.First, Replace(_scene.Second, choice)));
+                GUILayout.EndHorizontal();
             }
             GUILayout.EndScrollView();
             if (_message.Length > 0) GUILayout.Label(_message);
             GUILayout.EndArea();
         }
 
-        private static Primitive Replace(Primitive old, PrimitiveKind kind, int dimension) =>
-            new Primitive(kind, dimension, old.Position, old.Yaw, old.Pitch, old.Scale);
+        private static Primitive Replace(Primitive old, Primitive choice) =>
+            new Primitive(choice.Kind, choice.Dimension, old.Position, old.Yaw, old.Pitch, old.Scale);
 
         // The scene model refuses mixed dimensions with an ArgumentException; its message is what the user sees.
         private void SetScene(Func<PickerScene> change)

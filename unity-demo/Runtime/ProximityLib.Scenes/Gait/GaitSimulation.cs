@@ -176,10 +176,7 @@ namespace ProximityLib.Scenes.Gait
         {
             double p = percent - 100 * Math.Floor(percent / 100);
             var pose = PoseAt(p);
-            var distances = new Vector3(
-                ClosestDistance.Between(pose.Heel, Ground).Distance,
-                ClosestDistance.Between(pose.Sole, Ground).Distance,
-                ClosestDistance.Between(pose.Toe, Ground).Distance);
+            var distances = new Vector3(Distance(pose, FootPart.Heel), Distance(pose, FootPart.Sole), Distance(pose, FootPart.Toe));
             return new GaitFrame(p, p / 100 * StrideDuration, pose, distances,
                 ProximityQuery.Overlaps(pose.Heel, _contactGround),
                 ProximityQuery.Overlaps(pose.Sole, _contactGround),
@@ -187,14 +184,14 @@ namespace ProximityLib.Scenes.Gait
         }
 
         // The part's distance to the ground less the tolerance, at a recorded (fractional) sample: ≤ 0 is contact.
-        private double Gap(FootPart part, double sample)
+        private double Gap(FootPart part, double sample) => Distance(Foot.PoseAt(sample), part) - ContactTolerance;
+
+        private float Distance(in FootPose pose, FootPart part) => part switch
         {
-            var pose = Foot.PoseAt(sample);
-            float d = part == FootPart.Heel ? ClosestDistance.Between(pose.Heel, Ground).Distance
-                : part == FootPart.Sole ? ClosestDistance.Between(pose.Sole, Ground).Distance
-                : ClosestDistance.Between(pose.Toe, Ground).Distance;
-            return d - ContactTolerance;
-        }
+            FootPart.Heel => ClosestDistance.Between(pose.Heel, Ground).Distance,
+            FootPart.Sole => ClosestDistance.Between(pose.Sole, Ground).Distance,
+            _ => ClosestDistance.Between(pose.Toe, Ground).Distance,
+        };
 
         private double FootGap(double sample) =>
             Math.Min(Gap(FootPart.Heel, sample), Math.Min(Gap(FootPart.Sole, sample), Gap(FootPart.Toe, sample)));
@@ -240,7 +237,7 @@ namespace ProximityLib.Scenes.Gait
             double best = double.PositiveInfinity, at = double.NaN;
             for (double p = GaitNorms.MidSwingStart; p <= GaitNorms.MidSwingEnd; p += 0.05)
             {
-                double d = ClosestDistance.Between(PoseAt(p).Toe, Ground).Distance;
+                double d = Distance(PoseAt(p), FootPart.Toe);
                 if (d < best) { best = d; at = p; }
             }
             return (best, at);
