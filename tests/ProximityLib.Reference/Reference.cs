@@ -163,20 +163,30 @@ namespace ProximityReference
             return r.LengthSquared;
         }
 
-        /// <summary>The configuration's local scale S: the largest coordinate difference between defining points, or radius.</summary>
+        /// <summary>
+        /// The configuration's local scale S: the largest coordinate difference between defining points, or radius.
+        /// Formed exactly (a double difference overflows for coordinates near ±1.8e308); +∞ only when S itself exceeds
+        /// the double range.
+        /// </summary>
         public static double Scale(RShape a, RShape b)
         {
-            var pts = new List<Vector3D>();
-            foreach (var p in a.Defining) pts.Add(p.ToDouble());
-            foreach (var p in b.Defining) pts.Add(p.ToDouble());
-            double s = Math.Max(a.Radius.ToDouble(), b.Radius.ToDouble());
-            for (int i = 0; i < pts.Count; i++)
-                for (int j = i + 1; j < pts.Count; j++)
+            var pts = new List<RVec>(a.Defining);
+            pts.AddRange(b.Defining);
+            var s = Rational.Zero;
+            if (a.Kind == RKind.Sphere) s = Rational.Max(s, a.Radius);
+            if (b.Kind == RKind.Sphere) s = Rational.Max(s, b.Radius);
+            for (int axis = 0; axis < 3; axis++)
+            {
+                Rational? lo = null, hi = null;
+                foreach (var p in pts)
                 {
-                    var d = pts[i] - pts[j];
-                    s = Math.Max(s, Math.Max(Math.Abs(d.X), Math.Max(Math.Abs(d.Y), Math.Abs(d.Z))));
+                    var x = axis == 0 ? p.X : axis == 1 ? p.Y : p.Z;
+                    if (lo == null || x < lo.Value) lo = x;
+                    if (hi == null || x > hi.Value) hi = x;
                 }
-            return s;
+                if (lo != null) s = Rational.Max(s, hi!.Value - lo.Value);
+            }
+            return s.ToDouble();
         }
 
         /// <summary>E = |d − d*| / (u·S), in units of the precision's unit roundoff u at the configuration's scale.</summary>

@@ -3,7 +3,7 @@ using System;
 namespace ProximityLib.Double
 {
     /// <summary>A closed solid axis-aligned box [Min, Max]; zero extents (a face, an edge, a point) are allowed.</summary>
-    public readonly struct Aabb3
+    public readonly struct Aabb3 : IScalable<Aabb3>
     {
         /// <summary>The minimum corner.</summary>
         public readonly Vector3D Min;
@@ -18,7 +18,15 @@ namespace ProximityLib.Double
             if (min.X > max.X || min.Y > max.Y || min.Z > max.Z)
                 throw new ArgumentException($"min {min} must not exceed max {max} on any axis.", nameof(min));
             Min = min; Max = max;
+            _extreme = !(Range.Moderate(min) && Range.Moderate(max));
         }
+
+        private readonly bool _extreme;
+        /// <summary>Whether a value lies outside the fast path's range (<see cref="Range"/>).</summary>
+        internal bool Extreme => _extreme;
+
+        void IScalable<Aabb3>.Measure(ref Rescale s) { s.Point(Min); s.Point(Max); }
+        Aabb3 IScalable<Aabb3>.Rescaled(in Rescale s) => new Aabb3(s.Apply(Min), s.Apply(Max));
 
         /// <summary>The paper's form: minimum corner plus length (X), height (Y) and width (Z), all non-negative.</summary>
         public static Aabb3 FromOrigin(Vector3D origin, double length, double height, double width)
@@ -47,7 +55,7 @@ namespace ProximityLib.Double
     }
 
     /// <summary>A closed solid axis-aligned rectangle [Min, Max]; zero extents (a segment, a point) are allowed.</summary>
-    public readonly struct Aabb2
+    public readonly struct Aabb2 : IScalable<Aabb2>
     {
         /// <summary>The minimum corner.</summary>
         public readonly Vector2D Min;
@@ -62,7 +70,15 @@ namespace ProximityLib.Double
             if (min.X > max.X || min.Y > max.Y)
                 throw new ArgumentException($"min {min} must not exceed max {max} on any axis.", nameof(min));
             Min = min; Max = max;
+            _extreme = !(Range.Moderate(min) && Range.Moderate(max));
         }
+
+        private readonly bool _extreme;
+        /// <summary>Whether a value lies outside the fast path's range (<see cref="Range"/>).</summary>
+        internal bool Extreme => _extreme;
+
+        void IScalable<Aabb2>.Measure(ref Rescale s) { s.Point(Min); s.Point(Max); }
+        Aabb2 IScalable<Aabb2>.Rescaled(in Rescale s) => new Aabb2(s.Apply(Min), s.Apply(Max));
 
         /// <summary>The paper's form: minimum corner plus length (X) and height (Y), both non-negative.</summary>
         public static Aabb2 FromOrigin(Vector2D origin, double length, double height)

@@ -1,7 +1,7 @@
 namespace ProximityLib.Double
 {
     /// <summary>A closed solid sphere; radius 0 is a point.</summary>
-    public readonly struct Sphere
+    public readonly struct Sphere : IScalable<Sphere>
     {
         /// <summary>The center.</summary>
         public readonly Vector3D Center;
@@ -14,11 +14,19 @@ namespace ProximityLib.Double
             Num.Finite(center, nameof(center));
             Num.NonNegative(radius, nameof(radius));
             Center = center; Radius = radius;
+            _extreme = !(Range.Moderate(center) && Range.Moderate(radius));
         }
+
+        private readonly bool _extreme;
+        /// <summary>Whether a value lies outside the fast path's range (<see cref="Range"/>).</summary>
+        internal bool Extreme => _extreme;
+
+        void IScalable<Sphere>.Measure(ref Rescale s) { s.Point(Center); s.Length(Radius); }
+        Sphere IScalable<Sphere>.Rescaled(in Rescale s) => new Sphere(s.Apply(Center), s.Apply(Radius));
     }
 
     /// <summary>A closed solid disc (the paper's circle); radius 0 is a point.</summary>
-    public readonly struct Circle
+    public readonly struct Circle : IScalable<Circle>
     {
         /// <summary>The center.</summary>
         public readonly Vector2D Center;
@@ -31,6 +39,14 @@ namespace ProximityLib.Double
             Num.Finite(center, nameof(center));
             Num.NonNegative(radius, nameof(radius));
             Center = center; Radius = radius;
+            _extreme = !(Range.Moderate(center) && Range.Moderate(radius));
         }
+
+        private readonly bool _extreme;
+        /// <summary>Whether a value lies outside the fast path's range (<see cref="Range"/>).</summary>
+        internal bool Extreme => _extreme;
+
+        void IScalable<Circle>.Measure(ref Rescale s) { s.Point(Center); s.Length(Radius); }
+        Circle IScalable<Circle>.Rescaled(in Rescale s) => new Circle(s.Apply(Center), s.Apply(Radius));
     }
 }

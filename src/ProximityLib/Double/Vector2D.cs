@@ -4,7 +4,7 @@ using System.Runtime.CompilerServices;
 namespace ProximityLib.Double
 {
     /// <summary>An immutable 2D vector of doubles: the point type of the double-precision 2D API.</summary>
-    public readonly struct Vector2D : IEquatable<Vector2D>
+    public readonly struct Vector2D : IEquatable<Vector2D>, IScalable<Vector2D>
     {
         /// <summary>The X component.</summary>
         public readonly double X;
@@ -63,6 +63,9 @@ namespace ProximityLib.Double
         internal Vector3D To3() => new Vector3D(X, Y, 0);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static Vector2D From3(Vector3D v) => new Vector2D(v.X, v.Y);
+
+        void IScalable<Vector2D>.Measure(ref Rescale s) => s.Point(this);
+        Vector2D IScalable<Vector2D>.Rescaled(in Rescale s) => s.Apply(this);
 
         /// <summary>Exact component-wise equality.</summary>
         public bool Equals(Vector2D other) => this == other;

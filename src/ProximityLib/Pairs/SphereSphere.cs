@@ -5,18 +5,28 @@ namespace ProximityLib.Double
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a sphere and a sphere (3D): negative when overlapping (depth = ra + rb − |ca − cb|); coincident centers push along +X. Algorithm: |ca − cb| − ra − rb (paper Eq. 17); overlap compares squares (paper Eq. 24).</summary>
-        public static DistanceResult3 Between(Sphere a, Sphere b) => Kernels.PointSphere(a.Center, b.Center, b.Radius).AsSphereFirst(a.Center, a.Radius);
-        /// <summary>Closest distance between a circle and a circle (2D): negative when overlapping (depth = ra + rb − |ca − cb|); coincident centers push along +X. Algorithm: |ca − cb| − ra − rb (paper Eq. 17); overlap compares squares (paper Eq. 24).</summary>
-        public static DistanceResult2 Between(Circle a, Circle b) => (Kernels.PointSphere(a.Center.To3(), b.Center.To3(), b.Radius).AsSphereFirst(a.Center.To3(), a.Radius)).To2();
+        /// <summary>Closest distance between a sphere and a sphere (3D): negative when overlapping (depth = ra + rb − |ca − cb|); coincident centers push the smaller sphere along +X (the larger along −X), whichever argument it is. Algorithm: |cb − ca| − (ra + rb) (paper Eq. 17); overlap compares squares (paper Eq. 24).</summary>
+        public static DistanceResult3 Between(Sphere a, Sphere b) =>
+            a.Extreme | b.Extreme ? Wide.Between(a, b, static (x, y) => Core(x, y)) : Core(a, b);
+        /// <summary>Closest distance between a circle and a circle (2D): negative when overlapping (depth = ra + rb − |ca − cb|); coincident centers push the smaller sphere along +X (the larger along −X), whichever argument it is. Algorithm: |cb − ca| − (ra + rb) (paper Eq. 17); overlap compares squares (paper Eq. 24).</summary>
+        public static DistanceResult2 Between(Circle a, Circle b) =>
+            a.Extreme | b.Extreme ? Wide.Between(a, b, static (x, y) => Core(x, y)) : Core(a, b);
+
+        internal static DistanceResult3 Core(Sphere a, Sphere b) => Kernels.SphereSphere(a.Center, a.Radius, b.Center, b.Radius);
+        internal static DistanceResult2 Core(Circle a, Circle b) => Kernels.SphereSphere(a.Center.To3(), a.Radius, b.Center.To3(), b.Radius).To2();
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and a sphere (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Sphere a, Sphere b) => (a.Center - b.Center).LengthSquared <= (a.Radius + b.Radius) * (a.Radius + b.Radius);
+        public static bool Overlaps(Sphere a, Sphere b) =>
+            a.Extreme | b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Whether a circle and a circle (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Circle a, Circle b) => (a.Center.To3() - b.Center.To3()).LengthSquared <= (a.Radius + b.Radius) * (a.Radius + b.Radius);
+        public static bool Overlaps(Circle a, Circle b) =>
+            a.Extreme | b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
+
+        internal static bool Core(Sphere a, Sphere b) => (b.Center - a.Center).LengthSquared <= (a.Radius + b.Radius) * (a.Radius + b.Radius);
+        internal static bool Core(Circle a, Circle b) => (b.Center - a.Center).LengthSquared <= (a.Radius + b.Radius) * (a.Radius + b.Radius);
     }
 }
 
@@ -24,17 +34,17 @@ namespace ProximityLib
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a sphere and a sphere (3D), computed in double: negative when overlapping (depth = ra + rb − |ca − cb|); coincident centers push along +X.</summary>
-        public static DistanceResult3 Between(Sphere a, Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Between(a.Inner, b.Inner));
-        /// <summary>Closest distance between a circle and a circle (2D), computed in double: negative when overlapping (depth = ra + rb − |ca − cb|); coincident centers push along +X.</summary>
-        public static DistanceResult2 Between(Circle a, Circle b) => new DistanceResult2(Dbl.ClosestDistance.Between(a.Inner, b.Inner));
+        /// <summary>Closest distance between a sphere and a sphere (3D), computed in double: negative when overlapping (depth = ra + rb − |ca − cb|); coincident centers push the smaller sphere along +X (the larger along −X), whichever argument it is.</summary>
+        public static DistanceResult3 Between(Sphere a, Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
+        /// <summary>Closest distance between a circle and a circle (2D), computed in double: negative when overlapping (depth = ra + rb − |ca − cb|); coincident centers push the smaller sphere along +X (the larger along −X), whichever argument it is.</summary>
+        public static DistanceResult2 Between(Circle a, Circle b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and a sphere (3D) touch or overlap.</summary>
-        public static bool Overlaps(Sphere a, Sphere b) => Dbl.ProximityQuery.Overlaps(a.Inner, b.Inner);
+        public static bool Overlaps(Sphere a, Sphere b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
         /// <summary>Whether a circle and a circle (2D) touch or overlap.</summary>
-        public static bool Overlaps(Circle a, Circle b) => Dbl.ProximityQuery.Overlaps(a.Inner, b.Inner);
+        public static bool Overlaps(Circle a, Circle b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
     }
 }

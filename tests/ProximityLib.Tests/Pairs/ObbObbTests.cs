@@ -1,6 +1,7 @@
 using System;
 using NUnit.Framework;
 using ProximityLib.Double;
+using ProximityTests.Support;
 using static ProximityTests.Support.Expect;
 
 namespace ProximityTests.Pairs
@@ -73,6 +74,61 @@ namespace ProximityTests.Pairs
             Assert.That(rect.Center, Is.EqualTo(V(1, 0.5)));
             Assert.That(rect.HalfExtents, Is.EqualTo(V(1, 0.5)));
             Assert.That(ProximityQuery.Overlaps(rect, new Obb2(V(2.5, 0.5), 0.0, V(0.5, 0.5))), Is.True);
+        }
+
+        // Regression (issue 10, item 3): edge × edge axes of nearly parallel edges were formed with a direction error
+        // of u/sinθ, so the depth over them was overstated (−4.06e-10 where a push of 8.8e-11 already separates).
+        [Test]
+        public void NearlyIdenticalRotationsDoNotOverstateTheDepth()
+        {
+            var a = Obb3.FromQuaternion(V(0.286512385721557, 0.6234506031607514, 0.8550464119087189), 0.5494897961616516, 0.8015345931053162,
+                0.23553642630577087, 0.011216752231121063, V(0.8142139775744704, 0.08036301521601295, 0.9474524459556921));
+            var b = Obb3.FromQuaternion(V(0.57441937307967, -0.4629371176964279, 0.7969599187308414), 0.5494897961616516, 0.8015346346076113,
+                0.23553642630577087, 0.011216752231121063, V(0.2764579808695512, 0, 0.4039006151277109));
+            var r = ClosestDistance.Between(a, b);
+            Assert.That(Exactly.Error(a, b, r.Distance), Is.LessThanOrEqualTo(32), $"D={r.Distance:R}, exact {Exactly.Distance(a, b):R}");
+            AssertPushOutTouches(a, b, r);
+        }
+
+        /// <summary>
+        /// Boxes whose rotations differ by 1e-6…1e-16 in the quaternion, placed edge to edge diagonally (where only an
+        /// edge × edge axis of nearly parallel edges separates them) with gaps and overlaps from 1e-6 to 1e-13 of their
+        /// size: distance within the bound, the verdict right outside the band, and the push-out just touching.
+        /// </summary>
+        [Test]
+        public void NearlyIdenticalRotationsEdgeToEdge()
+        {
+            var rng = new Random(2630);
+            foreach (double delta in new[] { 1e-6, 1e-9, 1e-12, 1e-16 })
+                foreach (double gap in new[] { -1e-6, -1e-9, -1e-13, 0, 1e-13, 1e-9, 1e-6 })
+                {
+                    double qx = rng.NextDouble() - 0.5, qy = rng.NextDouble() - 0.5, qz = rng.NextDouble() - 0.5, qw = rng.NextDouble() - 0.5;
+                    var ha = V(0.2 + rng.NextDouble(), 0.2 + rng.NextDouble(), 0.2 + rng.NextDouble());
+                    var hb = V(0.2 + rng.NextDouble(), 0.2 + rng.NextDouble(), 0.2 + rng.NextDouble());
+                    var a = Obb3.FromQuaternion(V(rng.NextDouble(), rng.NextDouble(), rng.NextDouble()), qx, qy, qz, qw, ha);
+                    var diagonal = (a.AxisX + a.AxisY) / Math.Sqrt(2);
+                    var center = a.Center + a.AxisX * (ha.X + hb.X) + a.AxisY * (ha.Y + hb.Y) + diagonal * gap;
+                    var b = Obb3.FromQuaternion(center, qx + delta * (rng.NextDouble() - 0.5), qy + delta * (rng.NextDouble() - 0.5), qz, qw, hb);
+                    var r = ClosestDistance.Between(a, b);
+                    double exact = Exactly.Distance(a, b), scale = Exactly.Scale(a, b);
+                    string what = $"δ={delta} gap={gap}: exact {exact:R}, got {r.Distance:R}";
+                    Assert.That(Exactly.Error(a, b, r.Distance), Is.LessThanOrEqualTo(32), what);
+                    if (Math.Abs(exact) > 32 * Exactly.U * scale)
+                    {
+                        Assert.That(ProximityQuery.Overlaps(a, b), Is.EqualTo(exact <= 0), "verdict, " + what);
+                        Assert.That(ProximityQuery.Overlaps(b, a), Is.EqualTo(exact <= 0), "verdict swapped, " + what);
+                    }
+                    if (r.Distance < 0) AssertPushOutTouches(a, b, r);
+                }
+        }
+
+        /// <summary>Moving A by PointB − PointA must leave the boxes touching: exact signed distance ≈ 0 afterwards.</summary>
+        private static void AssertPushOutTouches(Obb3 a, Obb3 b, DistanceResult3 r)
+        {
+            var moved = new Obb3(a.Center + (r.PointB - r.PointA), a.AxisX, a.AxisY, a.AxisZ, a.HalfExtents);
+            double scale = Exactly.Scale(a, b);
+            Assert.That(Math.Abs(Exactly.Distance(moved, b)), Is.LessThanOrEqualTo(32 * Exactly.U * scale),
+                $"after the push {r.PointB - r.PointA}: {Exactly.Distance(moved, b):R}");
         }
     }
 }

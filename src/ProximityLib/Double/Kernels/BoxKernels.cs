@@ -46,7 +46,7 @@ namespace ProximityLib.Double
             {
                 for (int i = 0; i < 3; i++)
                     for (int j = 0; j < 3; j++)
-                        TryBoxAxis(Vector3D.Cross(a.Axis(i), b.Axis(j)), a, b, ca, cb, ha, hb, ref depth, ref push);
+                        TryBoxAxis(EdgeCross(a.Axis(i), b.Axis(j)), a, b, ca, cb, ha, hb, ref depth, ref push);
             }
 
             if (depth < 0) push = default;
@@ -71,6 +71,15 @@ namespace ProximityLib.Double
             if (down < best) { best = down; push = -n * down; }
             if (up < best) { best = up; push = n * up; }
         }
+
+        /// <summary>
+        /// u × v for two unit box axes, accurate in direction even when they are nearly parallel: u × v = u × (v ∓ u),
+        /// v ∓ u carries one relative rounding per component, and u × (v ∓ u) has no cancellation (v ∓ u is nearly
+        /// perpendicular to u). The plain product's direction is off by u/sinθ, which moves a projection by that much
+        /// of the boxes' size: nearly identical rotations would overstate the depth or miss a separation.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static Vector3D EdgeCross(Vector3D u, Vector3D v) => Vector3D.Cross(u, Vector3D.Dot(u, v) >= 0 ? v - u : v + u);
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static double Radius(in Box box, Vector3D h, Vector3D n) =>
@@ -207,17 +216,16 @@ namespace ProximityLib.Double
             var pb = new Vector3D(x.B, y.B, z.B);
             if (g2 > 0) return new DistanceResult3(Math.Sqrt(g2), g2, pa, pb, 0, 0);
 
-            // Overlapping on every axis: push A out along the axis of least overlap, down before up, x before y before z.
-            double depth = x.Down;
-            int face = 0;
-            if (x.Up < depth) { depth = x.Up; face = 1; }
-            if (y.Down < depth) { depth = y.Down; face = 2; }
-            if (y.Up < depth) { depth = y.Up; face = 3; }
-            if (!planar)
-            {
-                if (z.Down < depth) { depth = z.Down; face = 4; }
-                if (z.Up < depth) { depth = z.Up; face = 5; }
-            }
+            // Overlapping on every axis: push A out along the axis of least overlap (x before y before z on ties), down or
+            // up, whichever is shorter. Swapping the boxes swaps each axis's two push-outs, so a tie between them is
+            // broken by the canonical order of the boxes, which flips too: either argument order gives one answer.
+            double mx = Math.Min(x.Down, x.Up), my = Math.Min(y.Down, y.Up), depth = mx;
+            int axis = 0;
+            if (my < depth) { depth = my; axis = 1; }
+            if (!planar && Math.Min(z.Down, z.Up) < depth) { depth = Math.Min(z.Down, z.Up); axis = 2; }
+            var g = axis == 0 ? x : (axis == 1 ? y : z);
+            bool down = g.Down < g.Up || (g.Down == g.Up && Order.Before(minA, maxA, minB, maxB));
+            int face = 2 * axis + (down ? 0 : 1);
             // Moving A down along the axis by `depth` puts its max face on B's min face, and vice versa.
             switch (face)
             {

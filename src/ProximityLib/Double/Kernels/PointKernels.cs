@@ -51,10 +51,12 @@ namespace ProximityLib.Double
         public static Vector3D SegmentPoint(Vector3D a, Vector3D b, double t) =>
             t <= 0.5 ? a + (b - a) * t : b - (b - a) * (1 - t);
 
-        public static PointContact PointSegment(Vector3D p, Vector3D a, Vector3D b)
+        /// <summary>Point against segment; <paramref name="inRange"/> tells whether the squared gap could be trusted (see <see cref="Range"/>).</summary>
+        public static PointContact PointSegment(Vector3D p, Vector3D a, Vector3D b, out bool inRange)
         {
             var r = PointSegmentResidual(p, a, b, out double t);
             double r2 = r.LengthSquared, dist = Math.Sqrt(r2);
+            inRange = Range.Length2(r, r2);
             var n = dist > 0 ? r / dist : AnyPerpendicular(b - a);
             return new PointContact(dist, r2, SegmentPoint(a, b, t), n, t);
         }
@@ -68,11 +70,13 @@ namespace ProximityLib.Double
             return len > 0 ? n / len : Vector3D.UnitX;
         }
 
+        /// <summary>Point against sphere; <paramref name="inRange"/> tells whether the squared gap could be trusted (see <see cref="Range"/>).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static PointContact PointSphere(Vector3D p, Vector3D center, double radius)
+        public static PointContact PointSphere(Vector3D p, Vector3D center, double radius, out bool inRange)
         {
             var r = p - center;
-            double len = r.Length;
+            double r2 = r.LengthSquared, len = Math.Sqrt(r2);
+            inRange = Range.Length2(r, r2);
             // Coincident centres have no preferred direction: +X is documented and keeps the 2D API planar.
             var n = len > 0 ? r * (1 / len) : Vector3D.UnitX;
             double d = len - radius;
@@ -82,8 +86,10 @@ namespace ProximityLib.Double
         /// <summary>
         /// Point against a solid box. Outside: clamp in the box frame (Ericson, RTCD §5.1.3). Inside or on the boundary:
         /// the nearest face gives the penetration depth and its outward normal; ties go to the lower axis, Lo before Hi.
+        /// <paramref name="inRange"/>: the squared gap could be trusted, or, inside, the depth is far above the
+        /// subnormal range (a point-sized box at the origin could otherwise swallow a subnormal offset).
         /// </summary>
-        public static PointContact PointBox(Vector3D p, in Box box)
+        public static PointContact PointBox(Vector3D p, in Box box, out bool inRange)
         {
             var q = box.ToLocal(p - box.Origin);
             var c = new Vector3D(Num.Clamp(q.X, box.Lo.X, box.Hi.X), Num.Clamp(q.Y, box.Lo.Y, box.Hi.Y), Num.Clamp(q.Z, box.Lo.Z, box.Hi.Z));
@@ -96,10 +102,12 @@ namespace ProximityLib.Double
                 double d2 = diff.LengthSquared;
                 double d = Math.Sqrt(d2);
                 var normal = d > 0 ? diff * (1 / d) : box.ToWorldOffset(Unit(q - c));
+                inRange = Range.Length2(diff, d2);
                 return new PointContact(d, d2, box.Origin + offset, normal, 0);
             }
 
             double depth = NearestFace(q, box.Lo, box.Hi, box.Planar, out int face);
+            inRange = depth >= Range.Lo;
             var onFace = FacePoint(q, box.Lo, box.Hi, face);
             return new PointContact(-depth, 0, box.Origin + box.ToWorldOffset(onFace), box.ToWorldOffset(FaceNormal(face)), 0);
         }
@@ -108,7 +116,7 @@ namespace ProximityLib.Double
         /// Point against an axis-aligned box given by its corners. The clamp is exact in world coordinates and the gap is
         /// one subtraction per axis, so this is both the fastest and the most accurate form for AABBs.
         /// </summary>
-        public static PointContact PointAabb(Vector3D p, Vector3D min, Vector3D max, bool planar)
+        public static PointContact PointAabb(Vector3D p, Vector3D min, Vector3D max, bool planar, out bool inRange)
         {
             var c = new Vector3D(Num.Clamp(p.X, min.X, max.X), Num.Clamp(p.Y, min.Y, max.Y), Num.Clamp(p.Z, min.Z, max.Z));
             if (p != c)
@@ -116,8 +124,11 @@ namespace ProximityLib.Double
                 var diff = p - c;
                 double d2 = diff.LengthSquared;
                 double d = Math.Sqrt(d2);
+                inRange = Range.Length2(diff, d2);
                 return new PointContact(d, d2, c, d > 0 ? diff * (1 / d) : Unit(diff / MaxAbs(diff)), 0);
             }
+            // Inside, the depth is a difference of coordinates: exact up to one rounding at any magnitude.
+            inRange = true;
             double depth = NearestFace(p, min, max, planar, out int face);
             return new PointContact(-depth, 0, FacePoint(p, min, max, face), FaceNormal(face), 0);
         }
@@ -167,12 +178,57 @@ namespace ProximityLib.Double
 
         private static Vector3D Unit(Vector3D v) => v / v.Length;
 
-        /// <summary>Whether p lies in the closed box (no square root).</summary>
+        /// <summary>
+        /// Whether p lies in the closed box (no square root). A point-sized box is compared exactly: a subnormal offset
+        /// could otherwise vanish in the rotation.
+        /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool PointInBox(Vector3D p, in Box box)
         {
             var q = box.ToLocal(p - box.Origin);
-            return q.X >= box.Lo.X && q.X <= box.Hi.X && q.Y >= box.Lo.Y && q.Y <= box.Hi.Y && q.Z >= box.Lo.Z && q.Z <= box.Hi.Z;
+            return q.X >= box.Lo.X && q.X <= box.Hi.X && q.Y >= box.Lo.Y && q.Y <= box.Hi.Y && q.Z >= box.Lo.Z && q.Z <= box.Hi.Z
+                && (box.Lo != box.Hi || p == box.Origin + box.ToWorldOffset(box.Lo));
+        }
+
+        /// <summary>Whether p lies in the closed sphere; <paramref name="inRange"/> as for <see cref="PointSphere"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool PointInSphere(Vector3D p, Vector3D center, double radius, out bool inRange)
+        {
+            var r = p - center;
+            double r2 = r.LengthSquared;
+            inRange = Range.Length2(r, r2);
+            return r2 <= radius * radius;
+        }
+
+        /// <summary>
+        /// Point against point, symmetric by construction: the witnesses are the points themselves and |b − a| = |a − b|
+        /// bit for bit. <paramref name="inRange"/> as for <see cref="PointSphere"/>.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static DistanceResult3 PointPoint(Vector3D a, Vector3D b, out bool inRange)
+        {
+            var d = b - a;
+            double d2 = d.LengthSquared;
+            inRange = Range.Length2(d, d2);
+            return new DistanceResult3(Math.Sqrt(d2), d2, a, b, 0, 0);
+        }
+
+        /// <summary>
+        /// Sphere against sphere, symmetric by construction: swapping the spheres negates d and n exactly and the radii
+        /// are summed (which commutes), so the swapped answer is this one with its witnesses swapped, bit for bit.
+        /// Coincident centres: the sphere first in the canonical order (the smaller radius) is pushed along +X, the other
+        /// along −X, whichever argument it is.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static DistanceResult3 SphereSphere(Vector3D ca, double ra, Vector3D cb, double rb)
+        {
+            var d = cb - ca;
+            double len = d.Length;
+            var n = len > 0 ? d * (1 / len) : (Order.Before(ca, ra, cb, rb) ? -Vector3D.UnitX : Vector3D.UnitX);
+            double dist = len - (ra + rb);
+            // + 0 turns −0 into 0: where ca and cb agree in a coordinate, n is +0 in both orders, not ∓0.
+            var zero = default(Vector3D);
+            return new DistanceResult3(dist, dist > 0 ? dist * dist : 0, ca + n * ra + zero, cb - n * rb + zero, 0, 0);
         }
 
         /// <summary>Whether p lies in the closed axis-aligned box [min, max].</summary>

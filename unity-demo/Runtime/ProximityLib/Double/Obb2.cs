@@ -8,7 +8,7 @@ namespace ProximityLib.Double
     /// A closed solid oriented rectangle: Center + AxisX*u + AxisY*v with |u|, |v| bounded by HalfExtents, where
     /// AxisY is AxisX turned +90°. <c>default</c> is the axis-aligned point box at the origin.
     /// </summary>
-    public readonly struct Obb2
+    public readonly struct Obb2 : IScalable<Obb2>
     {
         private readonly double _cos, _sin;
         // default(Obb2) must be valid: without this flag its axis would be zero.
@@ -35,6 +35,7 @@ namespace ProximityLib.Double
             double len = axisX.Length;
             Center = center; HalfExtents = halfExtents;
             _cos = axisX.X / len; _sin = axisX.Y / len; _hasAxis = true;
+            _extreme = !(Range.Moderate(center) && Range.Moderate(halfExtents));
         }
 
         /// <summary>Creates a box rotated counter-clockwise by <paramref name="angle"/> radians.</summary>
@@ -45,7 +46,22 @@ namespace ProximityLib.Double
             Num.Finite(angle, nameof(angle));
             Center = center; HalfExtents = halfExtents;
             _cos = Math.Cos(angle); _sin = Math.Sin(angle); _hasAxis = true;
+            _extreme = !(Range.Moderate(center) && Range.Moderate(halfExtents));
         }
+
+        private Obb2(in Obb2 frame, Vector2D center, Vector2D halfExtents)
+        {
+            Center = center; HalfExtents = halfExtents;
+            _cos = frame._cos; _sin = frame._sin; _hasAxis = frame._hasAxis;
+            _extreme = !(Range.Moderate(center) && Range.Moderate(halfExtents));
+        }
+
+        private readonly bool _extreme;
+        /// <summary>Whether a value lies outside the fast path's range (<see cref="Range"/>).</summary>
+        internal bool Extreme => _extreme;
+
+        void IScalable<Obb2>.Measure(ref Rescale s) { s.Point(Center); s.Length(Math.Max(HalfExtents.X, HalfExtents.Y)); }
+        Obb2 IScalable<Obb2>.Rescaled(in Rescale s) => new Obb2(this, s.Apply(Center), new Vector2D(s.Apply(HalfExtents.X), s.Apply(HalfExtents.Y)));
 
         /// <summary>
         /// The paper's form: the box's four corners and its two edge normals (<paramref name="axisX"/>, <paramref name="axisY"/>). The result is the smallest box with

@@ -9,7 +9,7 @@ namespace ProximityLib.Double
     /// Axes are stored orthonormal to double precision (given axes are checked against <see cref="AxisTolerance"/>
     /// and then re-orthonormalised); <c>default</c> is the axis-aligned point box at the origin.
     /// </summary>
-    public readonly struct Obb3
+    public readonly struct Obb3 : IScalable<Obb3>
     {
         /// <summary>How far given axes may be from orthonormal: |a·a − 1| and |a·b| at most this.</summary>
         public const double AxisTolerance = 1e-4;
@@ -48,6 +48,7 @@ namespace ProximityLib.Double
             var z = axisZ - x * Vector3D.Dot(x, axisZ) - y * Vector3D.Dot(y, axisZ);
             z /= z.Length;
             Center = center; HalfExtents = halfExtents; _x = x; _y = y; _z = z; _hasAxes = true;
+            _extreme = !(Range.Moderate(center) && Range.Moderate(halfExtents));
         }
 
         /// <summary>Creates a box rotated by a quaternion (normalised here; it must be finite and non-zero).</summary>
@@ -59,7 +60,21 @@ namespace ProximityLib.Double
         private Obb3(Vector3D center, Vector3D x, Vector3D y, Vector3D z, Vector3D halfExtents, bool trusted)
         {
             Center = center; HalfExtents = halfExtents; _x = x; _y = y; _z = z; _hasAxes = trusted;
+            _extreme = !(Range.Moderate(center) && Range.Moderate(halfExtents));
         }
+
+        private readonly bool _extreme;
+        /// <summary>Whether a value lies outside the fast path's range (<see cref="Range"/>).</summary>
+        internal bool Extreme => _extreme;
+
+        void IScalable<Obb3>.Measure(ref Rescale s)
+        {
+            s.Point(Center);
+            s.Length(Math.Max(HalfExtents.X, Math.Max(HalfExtents.Y, HalfExtents.Z)));
+        }
+
+        Obb3 IScalable<Obb3>.Rescaled(in Rescale s) =>
+            new Obb3(s.Apply(Center), AxisX, AxisY, AxisZ, new Vector3D(s.Apply(HalfExtents.X), s.Apply(HalfExtents.Y), s.Apply(HalfExtents.Z)), true);
 
         /// <summary>Creates a box rotated by the quaternion (x, y, z, w), which is normalised here and must be finite and non-zero.</summary>
         public static Obb3 FromQuaternion(Vector3D center, double x, double y, double z, double w, Vector3D halfExtents)

@@ -6,7 +6,7 @@ using System.Runtime.CompilerServices;
 namespace ProximityLib.Double
 {
     /// <summary>An immutable 3D vector of doubles: the point type of the double-precision API.</summary>
-    public readonly struct Vector3D : IEquatable<Vector3D>
+    public readonly struct Vector3D : IEquatable<Vector3D>, IScalable<Vector3D>
     {
         /// <summary>The X component.</summary>
         public readonly double X;
@@ -82,6 +82,9 @@ namespace ProximityLib.Double
         /// <summary>Rounds to the nearest float vector.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static explicit operator System.Numerics.Vector3(Vector3D v) => new System.Numerics.Vector3((float)v.X, (float)v.Y, (float)v.Z);
+
+        void IScalable<Vector3D>.Measure(ref Rescale s) => s.Point(this);
+        Vector3D IScalable<Vector3D>.Rescaled(in Rescale s) => s.Apply(this);
 
         /// <summary>Exact component-wise equality.</summary>
         public bool Equals(Vector3D other) => this == other;

@@ -8,25 +8,35 @@ namespace ProximityLib.Double
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between an AABB and an OBB (3D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 15 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; best edge–box pair when apart.</summary>
-        public static DistanceResult3 Between(Aabb3 a, Obb3 b) => Kernels.BoxBox(a.ToBox(), b.ToBox());
+        public static DistanceResult3 Between(Aabb3 a, Obb3 b) =>
+            a.Extreme | b.Extreme ? Wide.Between(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Closest distance between an OBB and an AABB (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult3 Between(Obb3 a, Aabb3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between an AABB and an OBB (2D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 4 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; best edge–box pair when apart.</summary>
-        public static DistanceResult2 Between(Aabb2 a, Obb2 b) => (Kernels.BoxBox(a.ToBox(), b.ToBox())).To2();
+        public static DistanceResult2 Between(Aabb2 a, Obb2 b) =>
+            a.Extreme | b.Extreme ? Wide.Between(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Closest distance between an OBB and an AABB (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult2 Between(Obb2 a, Aabb2 b) => Between(b, a).Swapped();
+
+        internal static DistanceResult3 Core(Aabb3 a, Obb3 b) => Kernels.BoxBox(a.ToBox(), b.ToBox());
+        internal static DistanceResult2 Core(Aabb2 a, Obb2 b) => Kernels.BoxBox(a.ToBox(), b.ToBox()).To2();
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether an AABB and an OBB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Aabb3 a, Obb3 b) => Kernels.BoxBoxOverlaps(a.ToBox(), b.ToBox());
+        public static bool Overlaps(Aabb3 a, Obb3 b) =>
+            a.Extreme | b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Whether an OBB and an AABB (3D) touch or overlap.</summary>
         public static bool Overlaps(Obb3 a, Aabb3 b) => Overlaps(b, a);
         /// <summary>Whether an AABB and an OBB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Aabb2 a, Obb2 b) => Kernels.BoxBoxOverlaps(a.ToBox(), b.ToBox());
+        public static bool Overlaps(Aabb2 a, Obb2 b) =>
+            a.Extreme | b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Whether an OBB and an AABB (2D) touch or overlap.</summary>
         public static bool Overlaps(Obb2 a, Aabb2 b) => Overlaps(b, a);
+
+        internal static bool Core(Aabb3 a, Obb3 b) => Kernels.BoxBoxOverlaps(a.ToBox(), b.ToBox());
+        internal static bool Core(Aabb2 a, Obb2 b) => Kernels.BoxBoxOverlaps(a.ToBox(), b.ToBox());
     }
 }
 
@@ -35,11 +45,11 @@ namespace ProximityLib
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between an AABB and an OBB (3D), computed in double: negative when overlapping (minimum translation over the separating-axis candidates).</summary>
-        public static DistanceResult3 Between(Aabb3 a, Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Between(a.Inner, b.Inner));
+        public static DistanceResult3 Between(Aabb3 a, Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
         /// <summary>Closest distance between an OBB and an AABB (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult3 Between(Obb3 a, Aabb3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between an AABB and an OBB (2D), computed in double: negative when overlapping (minimum translation over the separating-axis candidates).</summary>
-        public static DistanceResult2 Between(Aabb2 a, Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Between(a.Inner, b.Inner));
+        public static DistanceResult2 Between(Aabb2 a, Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
         /// <summary>Closest distance between an OBB and an AABB (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult2 Between(Obb2 a, Aabb2 b) => Between(b, a).Swapped();
     }
@@ -47,11 +57,11 @@ namespace ProximityLib
     public static partial class ProximityQuery
     {
         /// <summary>Whether an AABB and an OBB (3D) touch or overlap.</summary>
-        public static bool Overlaps(Aabb3 a, Obb3 b) => Dbl.ProximityQuery.Overlaps(a.Inner, b.Inner);
+        public static bool Overlaps(Aabb3 a, Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
         /// <summary>Whether an OBB and an AABB (3D) touch or overlap.</summary>
         public static bool Overlaps(Obb3 a, Aabb3 b) => Overlaps(b, a);
         /// <summary>Whether an AABB and an OBB (2D) touch or overlap.</summary>
-        public static bool Overlaps(Aabb2 a, Obb2 b) => Dbl.ProximityQuery.Overlaps(a.Inner, b.Inner);
+        public static bool Overlaps(Aabb2 a, Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
         /// <summary>Whether an OBB and an AABB (2D) touch or overlap.</summary>
         public static bool Overlaps(Obb2 a, Aabb2 b) => Overlaps(b, a);
     }

@@ -8,25 +8,41 @@ namespace ProximityLib.Double
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between a point and an OBB (3D): negative inside (depth to the nearest face). Algorithm: clamp in the box frame (Ericson RTCD §5.1.4); nearest face when inside.</summary>
-        public static DistanceResult3 Between(Vector3D a, Obb3 b) => Kernels.PointBox(a, b.ToBox()).AsPointFirst(a);
+        public static DistanceResult3 Between(Vector3D a, Obb3 b)
+        {
+            var r = Core(a, b, out bool inRange);
+            return inRange && !b.Extreme ? r : Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        }
         /// <summary>Closest distance between an OBB and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult3 Between(Obb3 a, Vector3D b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and an OBB (2D): negative inside (depth to the nearest face). Algorithm: clamp in the box frame (Ericson RTCD §5.1.4); nearest face when inside.</summary>
-        public static DistanceResult2 Between(Vector2D a, Obb2 b) => (Kernels.PointBox(a.To3(), b.ToBox()).AsPointFirst(a.To3())).To2();
+        public static DistanceResult2 Between(Vector2D a, Obb2 b)
+        {
+            var r = Core(a, b, out bool inRange);
+            return inRange && !b.Extreme ? r : Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        }
         /// <summary>Closest distance between an OBB and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult2 Between(Obb2 a, Vector2D b) => Between(b, a).Swapped();
+
+        internal static DistanceResult3 Core(Vector3D a, Obb3 b, out bool inRange) => Kernels.PointBox(a, b.ToBox(), out inRange).AsPointFirst(a);
+        internal static DistanceResult2 Core(Vector2D a, Obb2 b, out bool inRange) => Kernels.PointBox(a.To3(), b.ToBox(), out inRange).AsPointFirst(a.To3()).To2();
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and an OBB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Vector3D a, Obb3 b) => Kernels.PointInBox(a, b.ToBox());
+        public static bool Overlaps(Vector3D a, Obb3 b) =>
+            b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Whether an OBB and a point (3D) touch or overlap.</summary>
         public static bool Overlaps(Obb3 a, Vector3D b) => Overlaps(b, a);
         /// <summary>Whether a point and an OBB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Vector2D a, Obb2 b) => Kernels.PointInBox(a.To3(), b.ToBox());
+        public static bool Overlaps(Vector2D a, Obb2 b) =>
+            b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Whether an OBB and a point (2D) touch or overlap.</summary>
         public static bool Overlaps(Obb2 a, Vector2D b) => Overlaps(b, a);
+
+        internal static bool Core(Vector3D a, Obb3 b) => Kernels.PointInBox(a, b.ToBox());
+        internal static bool Core(Vector2D a, Obb2 b) => Kernels.PointInBox(a.To3(), b.ToBox());
     }
 }
 
@@ -35,11 +51,11 @@ namespace ProximityLib
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between a point and an OBB (3D), computed in double: negative inside (depth to the nearest face).</summary>
-        public static DistanceResult3 Between(Vector3 a, Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Between((Dbl.Vector3D)a, b.Inner));
+        public static DistanceResult3 Between(Vector3 a, Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
         /// <summary>Closest distance between an OBB and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult3 Between(Obb3 a, Vector3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and an OBB (2D), computed in double: negative inside (depth to the nearest face).</summary>
-        public static DistanceResult2 Between(Vector2 a, Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Between((Dbl.Vector2D)a, b.Inner));
+        public static DistanceResult2 Between(Vector2 a, Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
         /// <summary>Closest distance between an OBB and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult2 Between(Obb2 a, Vector2 b) => Between(b, a).Swapped();
     }
@@ -47,11 +63,11 @@ namespace ProximityLib
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and an OBB (3D) touch or overlap.</summary>
-        public static bool Overlaps(Vector3 a, Obb3 b) => Dbl.ProximityQuery.Overlaps((Dbl.Vector3D)a, b.Inner);
+        public static bool Overlaps(Vector3 a, Obb3 b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner);
         /// <summary>Whether an OBB and a point (3D) touch or overlap.</summary>
         public static bool Overlaps(Obb3 a, Vector3 b) => Overlaps(b, a);
         /// <summary>Whether a point and an OBB (2D) touch or overlap.</summary>
-        public static bool Overlaps(Vector2 a, Obb2 b) => Dbl.ProximityQuery.Overlaps((Dbl.Vector2D)a, b.Inner);
+        public static bool Overlaps(Vector2 a, Obb2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner);
         /// <summary>Whether an OBB and a point (2D) touch or overlap.</summary>
         public static bool Overlaps(Obb2 a, Vector2 b) => Overlaps(b, a);
     }

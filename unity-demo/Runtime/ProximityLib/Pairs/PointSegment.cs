@@ -8,25 +8,41 @@ namespace ProximityLib.Double
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between a point and a segment (3D): never negative; ParameterB is the clamped projection parameter. Algorithm: clamped projection with the residual formed from the nearer endpoint (robust form of paper Eq. 9–11; Eq. 10 cancels).</summary>
-        public static DistanceResult3 Between(Vector3D a, Segment3 b) => Kernels.PointSegment(a, b.Start, b.End).AsPointFirst(a);
+        public static DistanceResult3 Between(Vector3D a, Segment3 b)
+        {
+            var r = Core(a, b, out bool inRange);
+            return inRange && !b.Extreme ? r : Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        }
         /// <summary>Closest distance between a segment and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult3 Between(Segment3 a, Vector3D b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and a segment (2D): never negative; ParameterB is the clamped projection parameter. Algorithm: clamped projection with the residual formed from the nearer endpoint (robust form of paper Eq. 9–11; Eq. 10 cancels).</summary>
-        public static DistanceResult2 Between(Vector2D a, Segment2 b) => (Kernels.PointSegment(a.To3(), b.Start.To3(), b.End.To3()).AsPointFirst(a.To3())).To2();
+        public static DistanceResult2 Between(Vector2D a, Segment2 b)
+        {
+            var r = Core(a, b, out bool inRange);
+            return inRange && !b.Extreme ? r : Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        }
         /// <summary>Closest distance between a segment and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult2 Between(Segment2 a, Vector2D b) => Between(b, a).Swapped();
+
+        internal static DistanceResult3 Core(Vector3D a, Segment3 b, out bool inRange) => Kernels.PointSegment(a, b.Start, b.End, out inRange).AsPointFirst(a);
+        internal static DistanceResult2 Core(Vector2D a, Segment2 b, out bool inRange) => Kernels.PointSegment(a.To3(), b.Start.To3(), b.End.To3(), out inRange).AsPointFirst(a.To3()).To2();
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and a segment (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Vector3D a, Segment3 b) => Kernels.PointSegmentResidual(a, b.Start, b.End, out _) == default;
+        public static bool Overlaps(Vector3D a, Segment3 b) =>
+            b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Whether a segment and a point (3D) touch or overlap.</summary>
         public static bool Overlaps(Segment3 a, Vector3D b) => Overlaps(b, a);
         /// <summary>Whether a point and a segment (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Vector2D a, Segment2 b) => Kernels.PointSegmentResidual(a.To3(), b.Start.To3(), b.End.To3(), out _) == default;
+        public static bool Overlaps(Vector2D a, Segment2 b) =>
+            b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Whether a segment and a point (2D) touch or overlap.</summary>
         public static bool Overlaps(Segment2 a, Vector2D b) => Overlaps(b, a);
+
+        internal static bool Core(Vector3D a, Segment3 b) => Kernels.PointSegmentResidual(a, b.Start, b.End, out _) == default;
+        internal static bool Core(Vector2D a, Segment2 b) => Kernels.PointSegmentResidual(a.To3(), b.Start.To3(), b.End.To3(), out _) == default;
     }
 }
 
@@ -35,11 +51,11 @@ namespace ProximityLib
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between a point and a segment (3D), computed in double: never negative; ParameterB is the clamped projection parameter.</summary>
-        public static DistanceResult3 Between(Vector3 a, Segment3 b) => new DistanceResult3(Dbl.ClosestDistance.Between((Dbl.Vector3D)a, b.Inner));
+        public static DistanceResult3 Between(Vector3 a, Segment3 b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
         /// <summary>Closest distance between a segment and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult3 Between(Segment3 a, Vector3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and a segment (2D), computed in double: never negative; ParameterB is the clamped projection parameter.</summary>
-        public static DistanceResult2 Between(Vector2 a, Segment2 b) => new DistanceResult2(Dbl.ClosestDistance.Between((Dbl.Vector2D)a, b.Inner));
+        public static DistanceResult2 Between(Vector2 a, Segment2 b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
         /// <summary>Closest distance between a segment and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult2 Between(Segment2 a, Vector2 b) => Between(b, a).Swapped();
     }
@@ -47,11 +63,11 @@ namespace ProximityLib
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and a segment (3D) touch or overlap.</summary>
-        public static bool Overlaps(Vector3 a, Segment3 b) => Dbl.ProximityQuery.Overlaps((Dbl.Vector3D)a, b.Inner);
+        public static bool Overlaps(Vector3 a, Segment3 b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner);
         /// <summary>Whether a segment and a point (3D) touch or overlap.</summary>
         public static bool Overlaps(Segment3 a, Vector3 b) => Overlaps(b, a);
         /// <summary>Whether a point and a segment (2D) touch or overlap.</summary>
-        public static bool Overlaps(Vector2 a, Segment2 b) => Dbl.ProximityQuery.Overlaps((Dbl.Vector2D)a, b.Inner);
+        public static bool Overlaps(Vector2 a, Segment2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner);
         /// <summary>Whether a segment and a point (2D) touch or overlap.</summary>
         public static bool Overlaps(Segment2 a, Vector2 b) => Overlaps(b, a);
     }

@@ -8,25 +8,35 @@ namespace ProximityLib.Double
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between a segment and a sphere (3D): negative when the segment enters the sphere (depth = radius − distance from center to segment). Algorithm: point–segment distance from the center, less the radius (paper Eq. 16).</summary>
-        public static DistanceResult3 Between(Segment3 a, Sphere b) => Kernels.PointSegment(b.Center, a.Start, a.End).AsSphereFirst(b.Center, b.Radius).Swapped();
+        public static DistanceResult3 Between(Segment3 a, Sphere b) =>
+            a.Extreme | b.Extreme ? Wide.Between(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Closest distance between a sphere and a segment (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult3 Between(Sphere a, Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and a circle (2D): negative when the segment enters the sphere (depth = radius − distance from center to segment). Algorithm: point–segment distance from the center, less the radius (paper Eq. 16).</summary>
-        public static DistanceResult2 Between(Segment2 a, Circle b) => (Kernels.PointSegment(b.Center.To3(), a.Start.To3(), a.End.To3()).AsSphereFirst(b.Center.To3(), b.Radius).Swapped()).To2();
+        public static DistanceResult2 Between(Segment2 a, Circle b) =>
+            a.Extreme | b.Extreme ? Wide.Between(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Closest distance between a circle and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult2 Between(Circle a, Segment2 b) => Between(b, a).Swapped();
+
+        internal static DistanceResult3 Core(Segment3 a, Sphere b) => Kernels.PointSegment(b.Center, a.Start, a.End, out _).AsSphereFirst(b.Center, b.Radius).Swapped();
+        internal static DistanceResult2 Core(Segment2 a, Circle b) => Kernels.PointSegment(b.Center.To3(), a.Start.To3(), a.End.To3(), out _).AsSphereFirst(b.Center.To3(), b.Radius).Swapped().To2();
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and a sphere (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Segment3 a, Sphere b) => Kernels.PointSegmentResidual(b.Center, a.Start, a.End, out _).LengthSquared <= b.Radius * b.Radius;
+        public static bool Overlaps(Segment3 a, Sphere b) =>
+            a.Extreme | b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Whether a sphere and a segment (3D) touch or overlap.</summary>
         public static bool Overlaps(Sphere a, Segment3 b) => Overlaps(b, a);
         /// <summary>Whether a segment and a circle (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Segment2 a, Circle b) => Kernels.PointSegmentResidual(b.Center.To3(), a.Start.To3(), a.End.To3(), out _).LengthSquared <= b.Radius * b.Radius;
+        public static bool Overlaps(Segment2 a, Circle b) =>
+            a.Extreme | b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Whether a circle and a segment (2D) touch or overlap.</summary>
         public static bool Overlaps(Circle a, Segment2 b) => Overlaps(b, a);
+
+        internal static bool Core(Segment3 a, Sphere b) => Kernels.PointSegmentResidual(b.Center, a.Start, a.End, out _).LengthSquared <= b.Radius * b.Radius;
+        internal static bool Core(Segment2 a, Circle b) => Kernels.PointSegmentResidual(b.Center.To3(), a.Start.To3(), a.End.To3(), out _).LengthSquared <= b.Radius * b.Radius;
     }
 }
 
@@ -35,11 +45,11 @@ namespace ProximityLib
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between a segment and a sphere (3D), computed in double: negative when the segment enters the sphere (depth = radius − distance from center to segment).</summary>
-        public static DistanceResult3 Between(Segment3 a, Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Between(a.Inner, b.Inner));
+        public static DistanceResult3 Between(Segment3 a, Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
         /// <summary>Closest distance between a sphere and a segment (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult3 Between(Sphere a, Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and a circle (2D), computed in double: negative when the segment enters the sphere (depth = radius − distance from center to segment).</summary>
-        public static DistanceResult2 Between(Segment2 a, Circle b) => new DistanceResult2(Dbl.ClosestDistance.Between(a.Inner, b.Inner));
+        public static DistanceResult2 Between(Segment2 a, Circle b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
         /// <summary>Closest distance between a circle and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult2 Between(Circle a, Segment2 b) => Between(b, a).Swapped();
     }
@@ -47,11 +57,11 @@ namespace ProximityLib
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and a sphere (3D) touch or overlap.</summary>
-        public static bool Overlaps(Segment3 a, Sphere b) => Dbl.ProximityQuery.Overlaps(a.Inner, b.Inner);
+        public static bool Overlaps(Segment3 a, Sphere b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
         /// <summary>Whether a sphere and a segment (3D) touch or overlap.</summary>
         public static bool Overlaps(Sphere a, Segment3 b) => Overlaps(b, a);
         /// <summary>Whether a segment and a circle (2D) touch or overlap.</summary>
-        public static bool Overlaps(Segment2 a, Circle b) => Dbl.ProximityQuery.Overlaps(a.Inner, b.Inner);
+        public static bool Overlaps(Segment2 a, Circle b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
         /// <summary>Whether a circle and a segment (2D) touch or overlap.</summary>
         public static bool Overlaps(Circle a, Segment2 b) => Overlaps(b, a);
     }

@@ -8,25 +8,35 @@ namespace ProximityLib.Double
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between a sphere and an AABB (3D): negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside). Algorithm: point–AABB from the center, less the radius; overlap by Arvo's squared test (paper Eq. 23).</summary>
-        public static DistanceResult3 Between(Sphere a, Aabb3 b) => Kernels.PointAabb(a.Center, b.Min, b.Max, false).AsSphereFirst(a.Center, a.Radius);
+        public static DistanceResult3 Between(Sphere a, Aabb3 b) =>
+            a.Extreme | b.Extreme ? Wide.Between(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Closest distance between an AABB and a sphere (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult3 Between(Aabb3 a, Sphere b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a circle and an AABB (2D): negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside). Algorithm: point–AABB from the center, less the radius; overlap by Arvo's squared test (paper Eq. 23).</summary>
-        public static DistanceResult2 Between(Circle a, Aabb2 b) => (Kernels.PointAabb(a.Center.To3(), b.Min.To3(), b.Max.To3(), true).AsSphereFirst(a.Center.To3(), a.Radius)).To2();
+        public static DistanceResult2 Between(Circle a, Aabb2 b) =>
+            a.Extreme | b.Extreme ? Wide.Between(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Closest distance between an AABB and a circle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult2 Between(Aabb2 a, Circle b) => Between(b, a).Swapped();
+
+        internal static DistanceResult3 Core(Sphere a, Aabb3 b) => Kernels.PointAabb(a.Center, b.Min, b.Max, false, out _).AsSphereFirst(a.Center, a.Radius);
+        internal static DistanceResult2 Core(Circle a, Aabb2 b) => Kernels.PointAabb(a.Center.To3(), b.Min.To3(), b.Max.To3(), true, out _).AsSphereFirst(a.Center.To3(), a.Radius).To2();
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and an AABB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Sphere a, Aabb3 b) => Kernels.PointAabbDistanceSquared(a.Center, b.Min, b.Max) <= a.Radius * a.Radius;
+        public static bool Overlaps(Sphere a, Aabb3 b) =>
+            a.Extreme | b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Whether an AABB and a sphere (3D) touch or overlap.</summary>
         public static bool Overlaps(Aabb3 a, Sphere b) => Overlaps(b, a);
         /// <summary>Whether a circle and an AABB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Circle a, Aabb2 b) => Kernels.PointAabbDistanceSquared(a.Center.To3(), b.Min.To3(), b.Max.To3()) <= a.Radius * a.Radius;
+        public static bool Overlaps(Circle a, Aabb2 b) =>
+            a.Extreme | b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Whether an AABB and a circle (2D) touch or overlap.</summary>
         public static bool Overlaps(Aabb2 a, Circle b) => Overlaps(b, a);
+
+        internal static bool Core(Sphere a, Aabb3 b) => Kernels.PointAabbDistanceSquared(a.Center, b.Min, b.Max) <= a.Radius * a.Radius;
+        internal static bool Core(Circle a, Aabb2 b) => Kernels.PointAabbDistanceSquared(a.Center.To3(), b.Min.To3(), b.Max.To3()) <= a.Radius * a.Radius;
     }
 }
 
@@ -35,11 +45,11 @@ namespace ProximityLib
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between a sphere and an AABB (3D), computed in double: negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside).</summary>
-        public static DistanceResult3 Between(Sphere a, Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Between(a.Inner, b.Inner));
+        public static DistanceResult3 Between(Sphere a, Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
         /// <summary>Closest distance between an AABB and a sphere (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult3 Between(Aabb3 a, Sphere b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a circle and an AABB (2D), computed in double: negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside).</summary>
-        public static DistanceResult2 Between(Circle a, Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Between(a.Inner, b.Inner));
+        public static DistanceResult2 Between(Circle a, Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
         /// <summary>Closest distance between an AABB and a circle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult2 Between(Aabb2 a, Circle b) => Between(b, a).Swapped();
     }
@@ -47,11 +57,11 @@ namespace ProximityLib
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and an AABB (3D) touch or overlap.</summary>
-        public static bool Overlaps(Sphere a, Aabb3 b) => Dbl.ProximityQuery.Overlaps(a.Inner, b.Inner);
+        public static bool Overlaps(Sphere a, Aabb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
         /// <summary>Whether an AABB and a sphere (3D) touch or overlap.</summary>
         public static bool Overlaps(Aabb3 a, Sphere b) => Overlaps(b, a);
         /// <summary>Whether a circle and an AABB (2D) touch or overlap.</summary>
-        public static bool Overlaps(Circle a, Aabb2 b) => Dbl.ProximityQuery.Overlaps(a.Inner, b.Inner);
+        public static bool Overlaps(Circle a, Aabb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
         /// <summary>Whether an AABB and a circle (2D) touch or overlap.</summary>
         public static bool Overlaps(Aabb2 a, Circle b) => Overlaps(b, a);
     }

@@ -8,25 +8,35 @@ namespace ProximityLib.Double
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between a sphere and an OBB (3D): negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside). Algorithm: point–box from the center in the box frame, less the radius; overlap by Arvo's squared test.</summary>
-        public static DistanceResult3 Between(Sphere a, Obb3 b) => Kernels.PointBox(a.Center, b.ToBox()).AsSphereFirst(a.Center, a.Radius);
+        public static DistanceResult3 Between(Sphere a, Obb3 b) =>
+            a.Extreme | b.Extreme ? Wide.Between(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Closest distance between an OBB and a sphere (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult3 Between(Obb3 a, Sphere b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a circle and an OBB (2D): negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside). Algorithm: point–box from the center in the box frame, less the radius; overlap by Arvo's squared test.</summary>
-        public static DistanceResult2 Between(Circle a, Obb2 b) => (Kernels.PointBox(a.Center.To3(), b.ToBox()).AsSphereFirst(a.Center.To3(), a.Radius)).To2();
+        public static DistanceResult2 Between(Circle a, Obb2 b) =>
+            a.Extreme | b.Extreme ? Wide.Between(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Closest distance between an OBB and a circle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult2 Between(Obb2 a, Circle b) => Between(b, a).Swapped();
+
+        internal static DistanceResult3 Core(Sphere a, Obb3 b) => Kernels.PointBox(a.Center, b.ToBox(), out _).AsSphereFirst(a.Center, a.Radius);
+        internal static DistanceResult2 Core(Circle a, Obb2 b) => Kernels.PointBox(a.Center.To3(), b.ToBox(), out _).AsSphereFirst(a.Center.To3(), a.Radius).To2();
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and an OBB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Sphere a, Obb3 b) => Kernels.PointBoxDistanceSquared(a.Center, b.ToBox()) <= a.Radius * a.Radius;
+        public static bool Overlaps(Sphere a, Obb3 b) =>
+            a.Extreme | b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Whether an OBB and a sphere (3D) touch or overlap.</summary>
         public static bool Overlaps(Obb3 a, Sphere b) => Overlaps(b, a);
         /// <summary>Whether a circle and an OBB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
-        public static bool Overlaps(Circle a, Obb2 b) => Kernels.PointBoxDistanceSquared(a.Center.To3(), b.ToBox()) <= a.Radius * a.Radius;
+        public static bool Overlaps(Circle a, Obb2 b) =>
+            a.Extreme | b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
         /// <summary>Whether an OBB and a circle (2D) touch or overlap.</summary>
         public static bool Overlaps(Obb2 a, Circle b) => Overlaps(b, a);
+
+        internal static bool Core(Sphere a, Obb3 b) => Kernels.PointBoxDistanceSquared(a.Center, b.ToBox()) <= a.Radius * a.Radius;
+        internal static bool Core(Circle a, Obb2 b) => Kernels.PointBoxDistanceSquared(a.Center.To3(), b.ToBox()) <= a.Radius * a.Radius;
     }
 }
 
@@ -35,11 +45,11 @@ namespace ProximityLib
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between a sphere and an OBB (3D), computed in double: negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside).</summary>
-        public static DistanceResult3 Between(Sphere a, Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Between(a.Inner, b.Inner));
+        public static DistanceResult3 Between(Sphere a, Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
         /// <summary>Closest distance between an OBB and a sphere (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult3 Between(Obb3 a, Sphere b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a circle and an OBB (2D), computed in double: negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside).</summary>
-        public static DistanceResult2 Between(Circle a, Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Between(a.Inner, b.Inner));
+        public static DistanceResult2 Between(Circle a, Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
         /// <summary>Closest distance between an OBB and a circle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         public static DistanceResult2 Between(Obb2 a, Circle b) => Between(b, a).Swapped();
     }
@@ -47,11 +57,11 @@ namespace ProximityLib
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and an OBB (3D) touch or overlap.</summary>
-        public static bool Overlaps(Sphere a, Obb3 b) => Dbl.ProximityQuery.Overlaps(a.Inner, b.Inner);
+        public static bool Overlaps(Sphere a, Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
         /// <summary>Whether an OBB and a sphere (3D) touch or overlap.</summary>
         public static bool Overlaps(Obb3 a, Sphere b) => Overlaps(b, a);
         /// <summary>Whether a circle and an OBB (2D) touch or overlap.</summary>
-        public static bool Overlaps(Circle a, Obb2 b) => Dbl.ProximityQuery.Overlaps(a.Inner, b.Inner);
+        public static bool Overlaps(Circle a, Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
         /// <summary>Whether an OBB and a circle (2D) touch or overlap.</summary>
         public static bool Overlaps(Obb2 a, Circle b) => Overlaps(b, a);
     }

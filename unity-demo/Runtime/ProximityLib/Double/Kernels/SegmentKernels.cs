@@ -13,8 +13,9 @@ namespace ProximityLib.Double
         /// identity |d0|²|d1|² − (d0·d1)² = |d0 × d1|² with cross-product numerators (the usual determinant cancels to
         /// noise for nearly parallel segments), on a copy scaled by a power of two because |d0 × d1|² is a fourth power
         /// of the size. Well conditioned: inside is the answer, outside is clamped s, best t for it, and best s for a
-        /// clamped t (Ericson, Real-Time Collision Detection §5.1.9). Nearly parallel or parallel: the best of the
-        /// interior point and the four endpoint–segment candidates (the case split of Eberly's robust method).
+        /// clamped t (Ericson, Real-Time Collision Detection §5.1.9). Nearly parallel or parallel: the best of a refined
+        /// interior pair and the four endpoint–segment pairs (the case split of Eberly's robust method), each measured
+        /// as the distance of the two points it returns.
         /// </summary>
         public static double SegmentSegmentCore(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, out double s, out double t)
         {
@@ -40,21 +41,18 @@ namespace ProximityLib.Double
             double nn = n.LengthSquared;
             double si = nn > 0 ? Vector3D.Dot(Vector3D.Cross(wk, d1k), n) / nn : 0;
             double ti = nn > 0 ? Vector3D.Dot(Vector3D.Cross(wk, d0k), n) / nn : 0;
-            bool interior = nn > 0 && si >= 0 && si <= 1 && ti >= 0 && ti <= 1;
-            // The gap between the lines, (w·n)²/|n|², carries no error from (s, t), which nearly parallel segments
-            // determine only loosely; crossing 2D segments give exactly 0.
-            double lineGap = double.PositiveInfinity;
-            if (interior)
-            {
-                double wn = Vector3D.Dot(wk, n);
-                lineGap = wn * wn / nn / k / k;
-            }
 
-            if (nn >= 1e-4 * d0k.LengthSquared * d1k.LengthSquared)
+            // Well conditioned (sin²θ ≥ 1e-4; the product is formed first so the test is the same in either order).
+            if (nn >= 1e-4 * (d0k.LengthSquared * d1k.LengthSquared))
             {
-                // Well conditioned (sin²θ ≥ 1e-4): the interior point is the minimum when it is inside; otherwise clamp.
                 s = si; t = ti;
-                if (interior) return lineGap;
+                if (si >= 0 && si <= 1 && ti >= 0 && ti <= 1)
+                {
+                    // The gap between the lines, (w·n)²/|n|², carries no error from (s, t); crossing 2D segments give
+                    // exactly 0.
+                    double wn = Vector3D.Dot(wk, n);
+                    return wn * wn / nn / k / k;
+                }
                 s = Num.Clamp(si, 0, 1);
                 double tNum = b * s + f;
                 if (tNum < 0) { t = 0; s = Num.Clamp(-c / a, 0, 1); }
@@ -63,24 +61,35 @@ namespace ProximityLib.Double
                 return Residual(d0, d1, w, s, t);
             }
 
-            return NearlyParallel(a0, a1, b0, b1, lineGap, si, ti, out s, out t);
+            return NearlyParallel(a0, a1, b0, b1, nn > 0, si, out s, out t);
         }
 
         /// <summary>
-        /// Nearly parallel: the clamped sequence would start from a noisy s, so take the best of the interior point and
-        /// the four endpoint–segment candidates; each is a pair of real points, so a noisy one can only lose. Kept out of
-        /// line so the common path stays small enough for the JIT to inline everything in it.
+        /// Nearly parallel: the lines' parameters are known only loosely along the segments (an error of u/sinθ in s
+        /// moves the pair by u·|d|), and the gap between the lines depends on a normal whose direction is noisy. So
+        /// every candidate is a pair of real points measured by its own residual: the interior one refined by
+        /// projecting the point of A at the clamped s onto B and that point back onto A (each projection is well
+        /// conditioned, and the refined pair is within rounding of the minimum when it lies inside), and the four
+        /// endpoint–segment pairs, which cover every minimum on the boundary of the parameter square. A noisy
+        /// candidate can only lose. Kept out of line so the common path stays small enough to inline.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static double NearlyParallel(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, double lineGap, double si, double ti, out double s, out double t)
+        private static double NearlyParallel(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, bool hasInterior, double si, out double s, out double t)
         {
-            double best = lineGap;
-            s = si; t = ti;
-            double r2 = PointSegmentResidual(a0, b0, b1, out double tc).LengthSquared;
+            double best = double.PositiveInfinity;
+            s = 0; t = 0;
+            double r2, tc, sc;
+            if (hasInterior)
+            {
+                PointSegmentResidual(SegmentPoint(a0, a1, Num.Clamp(si, 0, 1)), b0, b1, out tc);
+                best = PointSegmentResidual(SegmentPoint(b0, b1, tc), a0, a1, out sc).LengthSquared;
+                s = sc; t = tc;
+            }
+            r2 = PointSegmentResidual(a0, b0, b1, out tc).LengthSquared;
             if (r2 < best) { best = r2; s = 0; t = tc; }
             r2 = PointSegmentResidual(a1, b0, b1, out tc).LengthSquared;
             if (r2 < best) { best = r2; s = 1; t = tc; }
-            r2 = PointSegmentResidual(b0, a0, a1, out double sc).LengthSquared;
+            r2 = PointSegmentResidual(b0, a0, a1, out sc).LengthSquared;
             if (r2 < best) { best = r2; s = sc; t = 0; }
             r2 = PointSegmentResidual(b1, a0, a1, out sc).LengthSquared;
             if (r2 < best) { best = r2; s = sc; t = 1; }

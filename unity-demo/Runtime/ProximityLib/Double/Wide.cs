@@ -1,0 +1,171 @@
+// Copied from src/ProximityLib/Double/Wide.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System;
+using System.Runtime.CompilerServices;
+
+namespace ProximityLib.Double
+{
+    /// <summary>
+    /// The fast path's range. A shape is <em>moderate</em> when every stored value (coordinates, radius, extents) is 0
+    /// or has a magnitude in [2^-400, 2^400]. Between moderate values every non-zero difference lies in [2^-452, 2^401]
+    /// (2^-452 is one ulp of 2^-400), so the squares and products the kernels form stay normal doubles, and whatever
+    /// underflows is far below the configuration's rounding: two moderate shapes need no further guard. Shapes record
+    /// at construction whether they are moderate. A point carries no flag, so a point pair checks the squared
+    /// distance it forms instead (<see cref="Length2"/>). Everything else takes the slow path, <see cref="Wide"/>.
+    /// </summary>
+    internal static class Range
+    {
+        /// <summary>2^-400 and 2^400: the moderate magnitudes.</summary>
+        public const double Min = 3.8725919148493183e-121, Max = 2.5822498780869086e+120;
+        /// <summary>2^-960 and 2^960: squared lengths in between are far from underflow and overflow.</summary>
+        public const double Lo2 = 1.0261342003245941e-289, Hi2 = 9.7453140114e+288;
+        /// <summary>2^-480: a length at least this large keeps its rounding far above the subnormal range.</summary>
+        public const double Lo = 3.2033329522929615e-145;
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool Moderate(double x)
+        {
+            double m = Math.Abs(x);
+            return m == 0 || (m >= Min && m <= Max);
+        }
+
+        public static bool Moderate(Vector3D v) => Moderate(v.X) && Moderate(v.Y) && Moderate(v.Z);
+        public static bool Moderate(Vector2D v) => Moderate(v.X) && Moderate(v.Y);
+
+        /// <summary>
+        /// Whether a squared length v2 = |v|² formed by a point pair can be trusted: in [2^-960, 2^960], or exactly 0
+        /// because v is. NaN (an overflowed difference) fails.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool Length2(Vector3D v, double v2) => v2 <= Hi2 && (v2 >= Lo2 || (v.X == 0 && v.Y == 0 && v.Z == 0));
+    }
+
+    /// <summary>A shape that the slow path can measure and rescale by a power of two.</summary>
+    internal interface IScalable<T> where T : struct
+    {
+        /// <summary>Feeds every stored point and length to the rescaling.</summary>
+        void Measure(ref Rescale s);
+
+        /// <summary>The same shape in the rescaled frame.</summary>
+        T Rescaled(in Rescale s);
+    }
+
+    /// <summary>
+    /// Maps a configuration outside the fast path's range into it and the answer back. Normally a pure power-of-two
+    /// scaling that brings the largest magnitude into [1, 2): it is exact (up to subnormal results), so the answer is
+    /// bit for bit the fast path's on the scaled inputs, and 2^k-scaled inputs give 2^k-scaled answers across the
+    /// boundary of the two paths. Only a configuration tiny against its own position (size below 2^-400 of its
+    /// coordinates, which pure scaling would underflow) is first translated next to the origin; that translation
+    /// rounds once per coordinate, at the configuration's scale.
+    /// </summary>
+    internal struct Rescale
+    {
+        private Vector3D _lo, _hi;                  // componentwise bounds of every point
+        private bool _started, _translate;
+        private double _abs, _len;                  // largest |coordinate|, largest length
+        private double _down1, _down2, _up1, _up2;  // 2^-e and 2^e, each as two factors that stay in range
+
+        public void Point(Vector3D p)
+        {
+            if (!_started) { _lo = _hi = p; _started = true; }
+            _lo = new Vector3D(Math.Min(_lo.X, p.X), Math.Min(_lo.Y, p.Y), Math.Min(_lo.Z, p.Z));
+            _hi = new Vector3D(Math.Max(_hi.X, p.X), Math.Max(_hi.Y, p.Y), Math.Max(_hi.Z, p.Z));
+            _abs = Math.Max(_abs, MaxAbs(p));
+        }
+
+        public void Point(Vector2D p) => Point(p.To3());
+
+        public void Length(double r) => _len = Math.Max(_len, r);
+
+        /// <summary>
+        /// Chooses the frame once every shape is measured. It depends only on the set of values, not on which shape
+        /// they came from, so both argument orders get the same frame. The translation origin is the componentwise
+        /// minimum, within the configuration's size of every point.
+        /// </summary>
+        public void Decide()
+        {
+            double abs = Math.Max(_abs, _len);
+            double rel = Math.Max(_len, MaxAbs(_hi - _lo));
+            _translate = rel < abs * Range.Min;
+            double m = _translate ? rel : abs;
+            int e = m > 0 ? Exponent(m) : 0;
+            Split(-e, out _down1, out _down2);
+            Split(e, out _up1, out _up2);
+        }
+
+        public Vector3D Apply(Vector3D p) => (_translate ? p - _lo : p) * _down1 * _down2;
+        public Vector2D Apply(Vector2D p) => Vector2D.From3(Apply(p.To3()));
+        public double Apply(double length) => length * _down1 * _down2;
+
+        private Vector3D Back(Vector3D p) => _translate ? _lo + p * _up1 * _up2 : p * _up1 * _up2;
+
+        public DistanceResult3 Back(in DistanceResult3 r) =>
+            new DistanceResult3(r.Distance * _up1 * _up2, r.DistanceSquared * _up1 * _up1 * _up2 * _up2,
+                Back(r.PointA), Back(r.PointB), r.ParameterA, r.ParameterB);
+
+        public DistanceResult2 Back(in DistanceResult2 r) =>
+            new DistanceResult2(r.Distance * _up1 * _up2, r.DistanceSquared * _up1 * _up1 * _up2 * _up2,
+                Vector2D.From3(Back(r.PointA.To3())), Vector2D.From3(Back(r.PointB.To3())), r.ParameterA, r.ParameterB);
+
+        private static double MaxAbs(Vector3D v) => Math.Max(Math.Abs(v.X), Math.Max(Math.Abs(v.Y), Math.Abs(v.Z)));
+
+        /// <summary>floor(log2 m) for a finite m &gt; 0, subnormals included.</summary>
+        private static int Exponent(double m)
+        {
+            int bias = 0;
+            if (m < 1e-300) { m *= 1267650600228229401496703205376.0; bias = 100; } // 2^100 lifts subnormals to normal
+            return (int)((BitConverter.DoubleToInt64Bits(m) >> 52) & 0x7FF) - 1023 - bias;
+        }
+
+        /// <summary>2^n as two normal factors (|n| ≤ 2046).</summary>
+        private static void Split(int n, out double f1, out double f2)
+        {
+            int n1 = n / 2;
+            f1 = Pow2(n1);
+            f2 = Pow2(n - n1);
+        }
+
+        private static double Pow2(int n) => BitConverter.Int64BitsToDouble((long)(n + 1023) << 52);
+    }
+
+    /// <summary>
+    /// The slow path: a configuration with a shape outside the moderate range, or a point pair whose squared distance
+    /// left [2^-960, 2^960], is rescaled (<see cref="Rescale"/>), answered by the same kernel, and mapped back. Rare by
+    /// construction (float inputs never need it beyond coincident points), so it is kept out of line.
+    /// </summary>
+    internal static class Wide
+    {
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static DistanceResult3 Between<TA, TB>(TA a, TB b, Func<TA, TB, DistanceResult3> core)
+            where TA : struct, IScalable<TA> where TB : struct, IScalable<TB>
+        {
+            var s = Measure(a, b);
+            return s.Back(core(a.Rescaled(s), b.Rescaled(s)));
+        }
+
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static DistanceResult2 Between<TA, TB>(TA a, TB b, Func<TA, TB, DistanceResult2> core)
+            where TA : struct, IScalable<TA> where TB : struct, IScalable<TB>
+        {
+            var s = Measure(a, b);
+            return s.Back(core(a.Rescaled(s), b.Rescaled(s)));
+        }
+
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static bool Overlaps<TA, TB>(TA a, TB b, Func<TA, TB, bool> core)
+            where TA : struct, IScalable<TA> where TB : struct, IScalable<TB>
+        {
+            var s = Measure(a, b);
+            return core(a.Rescaled(s), b.Rescaled(s));
+        }
+
+        private static Rescale Measure<TA, TB>(TA a, TB b) where TA : struct, IScalable<TA> where TB : struct, IScalable<TB>
+        {
+            var s = default(Rescale);
+            a.Measure(ref s);
+            b.Measure(ref s);
+            s.Decide();
+            return s;
+        }
+    }
+}
