@@ -332,7 +332,7 @@ namespace ProximityMonoCheck
         private static void Batch()
         {
             var points = Enumerable.Range(0, N).Select(i => At(i, 0)).ToArray();
-            var spheres = Enumerable.Range(0, N).Select(i => new F.Sphere(At(i, 3), (i % 3) * 0.5f)).ToArray();
+            var spheres = Enumerable.Range(0, N).Select(i => new F.Sphere(At(i, 3), (i % 3) * 0.75f)).ToArray();
             var boxes = Enumerable.Range(0, N).Select(i => F.Aabb3.FromCenter(At(i, 5), new Vector3(0.5f + (i % 2) * 0.5f, 0.25f, 1))).ToArray();
             var segments = Enumerable.Range(0, N).Select(i => new F.Segment3(At(i, 1), At(i, 7))).ToArray();
             var obbs = Enumerable.Range(0, N)

@@ -89,14 +89,15 @@ namespace ProximityLib.Double
             var sum = default(Vector3D);
             for (int i = 0; i < 8; i++)
             {
-                Num.Finite(corners[i], nameof(corners));
-                sum += corners[i];
+                var c = Spans.At(corners, i);
+                Num.Finite(c, nameof(corners));
+                sum += c;
             }
             var center = sum * 0.125;
             double hx = 0, hy = 0, hz = 0;
             for (int i = 0; i < 8; i++)
             {
-                var d = corners[i] - center;
+                var d = Spans.At(corners, i) - center;
                 hx = Math.Max(hx, Math.Abs(Vector3D.Dot(d, frame._x)));
                 hy = Math.Max(hy, Math.Abs(Vector3D.Dot(d, frame._y)));
                 hz = Math.Max(hz, Math.Abs(Vector3D.Dot(d, frame._z)));

@@ -124,7 +124,7 @@ namespace ProximityLib
         {
             if (corners.Length != 8) throw new ArgumentException($"a box has 8 corners (got {corners.Length}).", nameof(corners));
             Span<Dbl.Vector3D> wide = stackalloc Dbl.Vector3D[8];
-            for (int i = 0; i < 8; i++) wide[i] = corners[i];
+            for (int i = 0; i < 8; i++) wide[i] = Spans.At(corners, i);
             return new Obb3(Dbl.Obb3.FromCorners(wide, axisX, axisY, axisZ));
         }
         /// <summary>The center.</summary>
@@ -155,7 +155,7 @@ namespace ProximityLib
         {
             if (corners.Length != 4) throw new ArgumentException($"a rectangle has 4 corners (got {corners.Length}).", nameof(corners));
             Span<Dbl.Vector2D> wide = stackalloc Dbl.Vector2D[4];
-            for (int i = 0; i < 4; i++) wide[i] = corners[i];
+            for (int i = 0; i < 4; i++) wide[i] = Spans.At(corners, i);
             return new Obb2(Dbl.Obb2.FromCorners(wide, axisX, axisY));
         }
         /// <summary>The center.</summary>

@@ -58,15 +58,16 @@ namespace ProximityLib.Double
             var sum = default(Vector2D);
             for (int i = 0; i < 4; i++)
             {
-                Num.Finite(corners[i], nameof(corners));
-                sum += corners[i];
+                var c = Spans.At(corners, i);
+                Num.Finite(c, nameof(corners));
+                sum += c;
             }
             var center = sum * 0.25;
             var ax = Vector2D.From3(axes.AxisX);
             double hx = 0, hy = 0;
             for (int i = 0; i < 4; i++)
             {
-                var d = corners[i] - center;
+                var d = Spans.At(corners, i) - center;
                 hx = Math.Max(hx, Math.Abs(Vector2D.Dot(d, ax)));
                 hy = Math.Max(hy, Math.Abs(Vector2D.Cross(ax, d)));
             }
