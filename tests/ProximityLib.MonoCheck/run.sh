@@ -63,4 +63,4 @@ for run in mono-source mono-package; do
   fi
 done
 [ "$status" = 0 ] || exit 1
-echo "mono smoke ok: $(wc -l < "$work/net.txt") result lines identical on .NET 10, on Mono from source and on Mono with the netstandard2.1 build ($(mono --version | head -1 | sed -E 's/.*version ([^ ]+).*/Mono \1/'))"
+echo "mono smoke ok: $(wc -l < "$work/net.txt") result lines identical on .NET 10, on Mono from source and on Mono with the netstandard2.1 build ($(mono --version | head -1 | sed -E 's/.*version ([^ ]+).*/Mono \1/'), ${SECONDS}s)"
