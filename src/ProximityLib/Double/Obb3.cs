@@ -82,8 +82,8 @@ namespace ProximityLib.Double
             CheckComponent(w, nameof(w), rotation);
             double m = Math.Max(Math.Max(Math.Abs(x), Math.Abs(y)), Math.Max(Math.Abs(z), Math.Abs(w)));
             if (m == 0) throw new ArgumentException("the rotation quaternion must be non-zero (x = y = z = w = 0).", rotation ?? nameof(w));
-            // Scaling by a power of two is exact and changes no bit of the result, but keeps |q|² from overflowing or
-            // underflowing for quaternions far from unit size.
+            // Scaling by a power of two is exact, so the result keeps its bits wherever |q|² was in range already; it keeps
+            // |q|² from overflowing or underflowing for quaternions far from unit size.
             double k = Num.InversePowerOfTwo(m);
             x *= k; y *= k; z *= k; w *= k;
             double s = 2 / (x * x + y * y + z * z + w * w); // folds the normalisation into the usual 2·q·q products
