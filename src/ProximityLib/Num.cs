@@ -29,5 +29,17 @@ namespace ProximityLib
         {
             if (!v.IsFinite) throw new ArgumentException($"{name} must have finite components (got {v}).", name);
         }
+
+        /// <summary>
+        /// The power of two 2^−⌊log2 m⌋ for a positive finite m (clamped to the normal range, so a subnormal m gets 2^1022):
+        /// it brings m into [2^−52, 4), where sums of a few squares neither overflow nor underflow, and multiplying by it
+        /// is exact. Math.ScaleB/ILogB are not in netstandard2.1.
+        /// </summary>
+        public static double InversePowerOfTwo(double m)
+        {
+            long exponent = ((BitConverter.DoubleToInt64Bits(m) >> 52) & 0x7FF) - 1023;
+            exponent = Math.Min(1022, Math.Max(-1022, exponent));
+            return BitConverter.Int64BitsToDouble((1023 - exponent) << 52);
+        }
     }
 }

@@ -110,9 +110,9 @@ namespace ProximityLib
     {
         internal readonly Dbl.Obb3 Inner;
         private Obb3(Dbl.Obb3 inner) { Inner = inner; }
-        /// <summary>Creates a box rotated by a quaternion (normalised here; it must be finite and non-zero).</summary>
+        /// <summary>Creates a box rotated by a quaternion (normalised here); throws <see cref="ArgumentException"/> naming <paramref name="rotation"/> when it is zero or not finite.</summary>
         public Obb3(Vector3 center, Quaternion rotation, Vector3 halfExtents) { Inner = new Dbl.Obb3(center, rotation, halfExtents); }
-        /// <summary>Creates a box from axes orthonormal within <see cref="Dbl.Obb3.AxisTolerance"/>.</summary>
+        /// <summary>Creates a box from three axes of any finite, non-zero length whose directions are orthogonal within <see cref="Dbl.Obb3.AxisTolerance"/>; re-orthonormalised in double.</summary>
         public Obb3(Vector3 center, Vector3 axisX, Vector3 axisY, Vector3 axisZ, Vector3 halfExtents)
         {
             Inner = new Dbl.Obb3(center, axisX, axisY, axisZ, halfExtents);
@@ -122,7 +122,7 @@ namespace ProximityLib
         {
             if (corners.Length != 8) throw new ArgumentException($"a box has 8 corners (got {corners.Length}).", nameof(corners));
             Span<Dbl.Vector3D> wide = stackalloc Dbl.Vector3D[8];
-            for (int i = 0; i < 8; i++) wide[i] = corners[i];
+            for (int i = 0; i < 8; i++) wide[i] = Spans.At(corners, i);
             return new Obb3(Dbl.Obb3.FromCorners(wide, axisX, axisY, axisZ));
         }
         /// <summary>The center.</summary>
@@ -144,7 +144,7 @@ namespace ProximityLib
     {
         internal readonly Dbl.Obb2 Inner;
         private Obb2(Dbl.Obb2 inner) { Inner = inner; }
-        /// <summary>Creates a box from a unit axis (within <see cref="Dbl.Obb3.AxisTolerance"/>).</summary>
+        /// <summary>Creates a box from its first axis, of any finite, non-zero length (normalised here).</summary>
         public Obb2(Vector2 center, Vector2 axisX, Vector2 halfExtents) { Inner = new Dbl.Obb2(center, axisX, halfExtents); }
         /// <summary>Creates a box rotated counter-clockwise by <paramref name="angle"/> radians.</summary>
         public Obb2(Vector2 center, float angle, Vector2 halfExtents) { Inner = new Dbl.Obb2(center, (double)angle, halfExtents); }
@@ -153,7 +153,7 @@ namespace ProximityLib
         {
             if (corners.Length != 4) throw new ArgumentException($"a rectangle has 4 corners (got {corners.Length}).", nameof(corners));
             Span<Dbl.Vector2D> wide = stackalloc Dbl.Vector2D[4];
-            for (int i = 0; i < 4; i++) wide[i] = corners[i];
+            for (int i = 0; i < 4; i++) wide[i] = Spans.At(corners, i);
             return new Obb2(Dbl.Obb2.FromCorners(wide, axisX, axisY));
         }
         /// <summary>The center.</summary>

@@ -44,6 +44,14 @@ namespace ProximityTests
         }
 
         [Test]
+        public void FloatObbAxesOfAnyLengthAreNormalised()
+        {
+            var box = new Obb3(Vector3.Zero, new Vector3(2, 0, 0), new Vector3(0, 0, 0.5f), new Vector3(0, -3, 0), Vector3.One);
+            Assert.That((box.AxisX, box.AxisY, box.AxisZ), Is.EqualTo((Vector3.UnitX, Vector3.UnitZ, -Vector3.UnitY)));
+            Assert.That(Vector2.Distance(new Obb2(Vector2.Zero, new Vector2(3, 4), Vector2.One).AxisX, new Vector2(0.6f, 0.8f)), Is.LessThan(1e-7f));
+        }
+
+        [Test]
         public void FloatQueriesMatchTheDoubleOnes()
         {
             var a = new Obb3(new Vector3(0.1f, 0.2f, 0.3f), Quaternion.CreateFromYawPitchRoll(0.3f, 0.2f, 0.1f), new Vector3(0.5f, 0.4f, 0.3f));

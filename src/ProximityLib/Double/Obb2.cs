@@ -22,17 +22,14 @@ namespace ProximityLib.Double
         /// <summary>The second box axis: AxisX turned +90°.</summary>
         public Vector2D AxisY => _hasAxis ? new Vector2D(-_sin, _cos) : Vector2D.UnitY;
 
-        /// <summary>Creates a box from a unit axis (within <see cref="Obb3.AxisTolerance"/>, re-normalised here).</summary>
+        /// <summary>Creates a box from its first axis, of any finite, non-zero length (normalised here); throws <see cref="ArgumentException"/> on non-finite input, a zero axis or negative half-extents.</summary>
         public Obb2(Vector2D center, Vector2D axisX, Vector2D halfExtents)
         {
             Num.Finite(center, nameof(center));
             CheckHalfExtents(halfExtents);
-            Num.Finite(axisX, nameof(axisX));
-            if (!(Math.Abs(axisX.LengthSquared - 1) <= Obb3.AxisTolerance))
-                throw new ArgumentException($"axisX must be a unit vector within {Obb3.AxisTolerance}.", nameof(axisX));
-            double len = axisX.Length;
+            var x = Obb3.Direction(axisX.To3(), nameof(axisX));
             Center = center; HalfExtents = halfExtents;
-            _cos = axisX.X / len; _sin = axisX.Y / len; _hasAxis = true;
+            _cos = x.X; _sin = x.Y; _hasAxis = true;
             _extreme = !(Range.Moderate(center) && Range.Moderate(halfExtents));
         }
 
@@ -63,7 +60,8 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// The paper's form: the box's four corners and its two edge normals (<paramref name="axisX"/>, <paramref name="axisY"/>). The result is the smallest box with
-        /// those axes containing every corner, which is the box itself when the corners are a box's corners.
+        /// those axes containing every corner, which is the box itself when the corners are a box's corners. The normals
+        /// are validated as by <see cref="Obb3"/>'s axes constructor: any length, directions orthogonal within <see cref="Obb3.AxisTolerance"/>.
         /// </summary>
         public static Obb2 FromCorners(ReadOnlySpan<Vector2D> corners, Vector2D axisX, Vector2D axisY)
         {
@@ -72,15 +70,16 @@ namespace ProximityLib.Double
             var sum = default(Vector2D);
             for (int i = 0; i < 4; i++)
             {
-                Num.Finite(corners[i], nameof(corners));
-                sum += corners[i];
+                var c = Spans.At(corners, i);
+                Num.Finite(c, nameof(corners));
+                sum += c;
             }
             var center = sum * 0.25;
             var ax = Vector2D.From3(axes.AxisX);
             double hx = 0, hy = 0;
             for (int i = 0; i < 4; i++)
             {
-                var d = corners[i] - center;
+                var d = Spans.At(corners, i) - center;
                 hx = Math.Max(hx, Math.Abs(Vector2D.Dot(d, ax)));
                 hy = Math.Max(hy, Math.Abs(Vector2D.Cross(ax, d)));
             }

@@ -1,4 +1,5 @@
 #nullable enable
+using ProximityLib.Scenes;
 using UnityEngine;
 
 namespace ProximityLib.Unity
@@ -21,7 +22,8 @@ namespace ProximityLib.Unity
     /// <summary>
     /// Turns a GameObject's transform plus a radius or extents into a ProximityLib shape. Sizes are in local units
     /// and follow the transform's lossy scale (a sphere takes the largest axis, so it always encloses what it
-    /// scales); a shear from non-uniformly scaled, rotated parents is not representable and is ignored.
+    /// scales); a shear from non-uniformly scaled, rotated parents is not representable and is ignored. Sizes are
+    /// kept non-negative in the Inspector, and one set negative (or NaN) from script counts as 0 (see <see cref="ShapeSizes"/>).
     /// </summary>
     [DisallowMultipleComponent]
     public sealed class ProximityShape : MonoBehaviour
@@ -29,11 +31,20 @@ namespace ProximityLib.Unity
         /// <summary>The shape this component stands for.</summary>
         public ProximityShapeKind kind = ProximityShapeKind.Sphere;
         /// <summary>Sphere radius in local units.</summary>
-        public float radius = 0.5f;
+        [Min(0)] public float radius = 0.5f;
         /// <summary>Segment half-length along local x, in local units.</summary>
-        public float halfLength = 0.5f;
+        [Min(0)] public float halfLength = 0.5f;
         /// <summary>Box half-extents in local units (0.5 matches Unity's built-in cube).</summary>
-        public Vector3 halfExtents = new Vector3(0.5f, 0.5f, 0.5f);
+        [Min(0)] public Vector3 halfExtents = new Vector3(0.5f, 0.5f, 0.5f);
+
+        // Unity calls this after every Inspector edit: [Min(0)] clamps typed values, this also pasted, reverted and
+        // debug-mode ones, so a serialized size is never negative.
+        private void OnValidate()
+        {
+            radius = ShapeSizes.NonNegative(radius);
+            halfLength = ShapeSizes.NonNegative(halfLength);
+            halfExtents = new Vector3(ShapeSizes.NonNegative(halfExtents.x), ShapeSizes.NonNegative(halfExtents.y), ShapeSizes.NonNegative(halfExtents.z));
+        }
 
         /// <summary>The position as a point.</summary>
         public System.Numerics.Vector3 Point => transform.position.ToNumerics();
@@ -44,7 +55,7 @@ namespace ProximityLib.Unity
             get
             {
                 var c = transform.position;
-                var a = transform.TransformVector(new Vector3(halfLength, 0, 0));
+                var a = transform.TransformVector(new Vector3(ShapeSizes.NonNegative(halfLength), 0, 0));
                 return new Segment3((c - a).ToNumerics(), (c + a).ToNumerics());
             }
         }
@@ -55,7 +66,7 @@ namespace ProximityLib.Unity
             get
             {
                 var s = transform.lossyScale;
-                return new Sphere(transform.position.ToNumerics(), radius * Mathf.Max(Mathf.Abs(s.x), Mathf.Max(Mathf.Abs(s.y), Mathf.Abs(s.z))));
+                return new Sphere(transform.position.ToNumerics(), ShapeSizes.Scaled(radius, Mathf.Max(Mathf.Abs(s.x), Mathf.Max(Mathf.Abs(s.y), Mathf.Abs(s.z)))));
             }
         }
 
@@ -74,9 +85,9 @@ namespace ProximityLib.Unity
                 var y = r * new Vector3(0, h.y, 0);
                 var z = r * new Vector3(0, 0, h.z);
                 var half = new Vector3(
-                    Mathf.Abs(x.x) + Mathf.Abs(y.x) + Mathf.Abs(z.x),
-                    Mathf.Abs(x.y) + Mathf.Abs(y.y) + Mathf.Abs(z.y),
-                    Mathf.Abs(x.z) + Mathf.Abs(y.z) + Mathf.Abs(z.z));
+                    ShapeSizes.NonNegative(Mathf.Abs(x.x) + Mathf.Abs(y.x) + Mathf.Abs(z.x)),
+                    ShapeSizes.NonNegative(Mathf.Abs(x.y) + Mathf.Abs(y.y) + Mathf.Abs(z.y)),
+                    ShapeSizes.NonNegative(Mathf.Abs(x.z) + Mathf.Abs(y.z) + Mathf.Abs(z.z)));
                 return Aabb3.FromCenter(transform.position.ToNumerics(), half.ToNumerics());
             }
         }
@@ -86,7 +97,7 @@ namespace ProximityLib.Unity
             get
             {
                 var s = transform.lossyScale;
-                return new Vector3(halfExtents.x * Mathf.Abs(s.x), halfExtents.y * Mathf.Abs(s.y), halfExtents.z * Mathf.Abs(s.z));
+                return new Vector3(ShapeSizes.Scaled(halfExtents.x, s.x), ShapeSizes.Scaled(halfExtents.y, s.y), ShapeSizes.Scaled(halfExtents.z, s.z));
             }
         }
     }

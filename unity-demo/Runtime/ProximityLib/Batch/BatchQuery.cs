@@ -120,7 +120,7 @@ namespace ProximityLib.Batch
             var d2 = dx * dx + dy * dy + dz * dz;
             if (margin) return d2 - r * r;
             var depth = Vector.Min(Vector.Min(Vector.Min(px - lox, hix - px), Vector.Min(py - loy, hiy - py)), Vector.Min(pz - loz, hiz - pz));
-            return Vector.ConditionalSelect(Vector.GreaterThan(d2, Vector<float>.Zero), Vector.SquareRoot(d2), -depth) - r;
+            return Vector.ConditionalSelect(Vector.GreaterThan(d2, Vector<float>.Zero), Vector.SquareRoot(d2), Runner.Negate(depth)) - r;
         }
 
         private readonly struct SphereSphere<TS> : IKernel where TS : struct, ISpheres
@@ -175,7 +175,7 @@ namespace ProximityLib.Batch
                 var hx = new Vector<float>(_b.HX, i);
                 var hy = new Vector<float>(_b.HY, i);
                 var hz = new Vector<float>(_b.HZ, i);
-                return PointBox(qx, qy, qz, _a.R(i), -hx, -hy, -hz, hx, hy, hz, _margin);
+                return PointBox(qx, qy, qz, _a.R(i), Runner.Negate(hx), Runner.Negate(hy), Runner.Negate(hz), hx, hy, hz, _margin);
             }
         }
 
@@ -211,7 +211,7 @@ namespace ProximityLib.Batch
                 var dd0 = V3.Dot(d0, d0);
                 var dd1 = V3.Dot(d1, d1);
                 // a0 against segment b (offset a0 − b0 = −w), a1 against b (d0 − w), b0 against a (w), b1 against a (w + d1).
-                best = Vector.Min(best, PointSegment2(-w.X, -w.Y, -w.Z, d1, dd1));
+                best = Vector.Min(best, PointSegment2(Runner.Negate(w.X), Runner.Negate(w.Y), Runner.Negate(w.Z), d1, dd1));
                 best = Vector.Min(best, PointSegment2(d0.X - w.X, d0.Y - w.Y, d0.Z - w.Z, d1, dd1));
                 best = Vector.Min(best, PointSegment2(w.X, w.Y, w.Z, d0, dd0));
                 best = Vector.Min(best, PointSegment2(w.X + d1.X, w.Y + d1.Y, w.Z + d1.Z, d0, dd0));

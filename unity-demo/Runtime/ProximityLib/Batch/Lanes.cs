@@ -212,5 +212,9 @@ namespace ProximityLib.Batch
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Vector<float> Clamp(Vector<float> x, Vector<float> lo, Vector<float> hi) => Vector.Min(Vector.Max(x, lo), hi);
+
+        /// <summary>−x by flipping the sign bit, as .NET's unary minus does: Mono's Vector&lt;T&gt; negation computes 0 − x, which keeps +0 positive, so unary minus would give Mono and .NET results of different sign at 0.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Vector<float> Negate(Vector<float> x) => Vector.AsVectorSingle(Vector.Xor(Vector.AsVectorUInt32(x), new Vector<uint>(0x80000000u)));
     }
 }

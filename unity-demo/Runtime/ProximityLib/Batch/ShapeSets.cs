@@ -34,7 +34,7 @@ namespace ProximityLib.Batch
         public PointSet(ReadOnlySpan<Vector3> points) : base(points.Length)
         {
             X = Lanes(Count); Y = Lanes(Count); Z = Lanes(Count);
-            for (int i = 0; i < points.Length; i++) Set(i, points[i]);
+            for (int i = 0; i < points.Length; i++) Set(i, Spans.At(points, i));
         }
 
         /// <summary>Replaces point i; throws <see cref="ArgumentException"/> on non-finite coordinates.</summary>
@@ -55,7 +55,7 @@ namespace ProximityLib.Batch
         public SegmentSet(ReadOnlySpan<Segment3> segments) : base(segments.Length)
         {
             AX = Lanes(Count); AY = Lanes(Count); AZ = Lanes(Count); BX = Lanes(Count); BY = Lanes(Count); BZ = Lanes(Count);
-            for (int i = 0; i < segments.Length; i++) Set(i, segments[i]);
+            for (int i = 0; i < segments.Length; i++) Set(i, Spans.At(segments, i));
         }
 
         /// <summary>Replaces segment i (already validated by its constructor).</summary>
@@ -76,7 +76,7 @@ namespace ProximityLib.Batch
         public SphereSet(ReadOnlySpan<Sphere> spheres) : base(spheres.Length)
         {
             X = Lanes(Count); Y = Lanes(Count); Z = Lanes(Count); R = Lanes(Count);
-            for (int i = 0; i < spheres.Length; i++) Set(i, spheres[i]);
+            for (int i = 0; i < spheres.Length; i++) Set(i, Spans.At(spheres, i));
         }
 
         /// <summary>Replaces sphere i (already validated by its constructor).</summary>
@@ -97,7 +97,7 @@ namespace ProximityLib.Batch
         {
             MinX = Lanes(Count); MinY = Lanes(Count); MinZ = Lanes(Count);
             MaxX = Lanes(Count); MaxY = Lanes(Count); MaxZ = Lanes(Count);
-            for (int i = 0; i < boxes.Length; i++) Set(i, boxes[i]);
+            for (int i = 0; i < boxes.Length; i++) Set(i, Spans.At(boxes, i));
         }
 
         /// <summary>Replaces box i (already validated by its constructor).</summary>
@@ -122,7 +122,7 @@ namespace ProximityLib.Batch
             YX = Lanes(Count); YY = Lanes(Count); YZ = Lanes(Count);
             ZX = Lanes(Count); ZY = Lanes(Count); ZZ = Lanes(Count);
             HX = Lanes(Count); HY = Lanes(Count); HZ = Lanes(Count);
-            for (int i = 0; i < boxes.Length; i++) Set(i, boxes[i]);
+            for (int i = 0; i < boxes.Length; i++) Set(i, Spans.At(boxes, i));
         }
 
         /// <summary>Replaces box i (already validated by its constructor).</summary>

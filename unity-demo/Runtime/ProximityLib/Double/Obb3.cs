@@ -6,12 +6,12 @@ namespace ProximityLib.Double
 {
     /// <summary>
     /// A closed solid oriented box: Center + AxisX*u + AxisY*v + AxisZ*w with |u|, |v|, |w| bounded by HalfExtents.
-    /// Axes are stored orthonormal to double precision (given axes are checked against <see cref="AxisTolerance"/>
-    /// and then re-orthonormalised); <c>default</c> is the axis-aligned point box at the origin.
+    /// Axes are stored orthonormal to double precision (given axes are normalised, their directions checked against
+    /// <see cref="AxisTolerance"/>, then re-orthonormalised); <c>default</c> is the axis-aligned point box at the origin.
     /// </summary>
     public readonly struct Obb3 : IScalable<Obb3>
     {
-        /// <summary>How far given axes may be from orthonormal: |a·a − 1| and |a·b| at most this.</summary>
+        /// <summary>How far the directions of given axes may be from orthogonal: |â·b̂| at most this, â and b̂ the axes scaled to unit length.</summary>
         public const double AxisTolerance = 1e-4;
 
         private readonly Vector3D _x, _y, _z;
@@ -30,30 +30,34 @@ namespace ProximityLib.Double
         /// <summary>The third box axis (unit).</summary>
         public Vector3D AxisZ => _hasAxes ? _z : Vector3D.UnitZ;
 
-        /// <summary>Creates a box from orthonormal axes; throws <see cref="ArgumentException"/> on non-finite input, negative half-extents, or axes off orthonormal by more than <see cref="AxisTolerance"/>.</summary>
+        /// <summary>
+        /// Creates a box from three axes of any finite, non-zero length: each is normalised first, and the unit directions
+        /// must be orthogonal within <see cref="AxisTolerance"/> (so axes from a quaternion whose norm has drifted are
+        /// fine). Throws <see cref="ArgumentException"/> on non-finite input, a zero axis, negative half-extents, or
+        /// directions further from orthogonal.
+        /// </summary>
         public Obb3(Vector3D center, Vector3D axisX, Vector3D axisY, Vector3D axisZ, Vector3D halfExtents)
         {
             Num.Finite(center, nameof(center));
             CheckHalfExtents(halfExtents);
-            CheckUnit(axisX, nameof(axisX));
-            CheckUnit(axisY, nameof(axisY));
-            CheckUnit(axisZ, nameof(axisZ));
-            CheckOrthogonal(axisX, axisY, nameof(axisY));
-            CheckOrthogonal(axisX, axisZ, nameof(axisZ));
-            CheckOrthogonal(axisY, axisZ, nameof(axisZ));
+            var x = Direction(axisX, nameof(axisX));
+            var y = Direction(axisY, nameof(axisY));
+            var z = Direction(axisZ, nameof(axisZ));
+            CheckOrthogonal(x, y, nameof(axisY));
+            CheckOrthogonal(x, z, nameof(axisZ));
+            CheckOrthogonal(y, z, nameof(axisZ));
             // Gram–Schmidt in double: the stored frame is orthonormal to rounding, which the kernels rely on.
-            var x = axisX / axisX.Length;
-            var y = axisY - x * Vector3D.Dot(x, axisY);
+            y -= x * Vector3D.Dot(x, y);
             y /= y.Length;
-            var z = axisZ - x * Vector3D.Dot(x, axisZ) - y * Vector3D.Dot(y, axisZ);
+            z = z - x * Vector3D.Dot(x, z) - y * Vector3D.Dot(y, z);
             z /= z.Length;
             Center = center; HalfExtents = halfExtents; _x = x; _y = y; _z = z; _hasAxes = true;
             _extreme = !(Range.Moderate(center) && Range.Moderate(halfExtents));
         }
 
-        /// <summary>Creates a box rotated by a quaternion (normalised here; it must be finite and non-zero).</summary>
+        /// <summary>Creates a box rotated by a quaternion (normalised here); throws <see cref="ArgumentException"/> naming <paramref name="rotation"/> when it is zero or not finite.</summary>
         public Obb3(Vector3D center, System.Numerics.Quaternion rotation, Vector3D halfExtents)
-            : this(FromQuaternion(center, rotation.X, rotation.Y, rotation.Z, rotation.W, halfExtents)) { }
+            : this(Rotated(center, rotation.X, rotation.Y, rotation.Z, rotation.W, halfExtents, nameof(rotation))) { }
 
         private Obb3(Obb3 other) { this = other; }
 
@@ -76,15 +80,30 @@ namespace ProximityLib.Double
         Obb3 IScalable<Obb3>.Rescaled(in Rescale s) =>
             new Obb3(s.Apply(Center), AxisX, AxisY, AxisZ, new Vector3D(s.Apply(HalfExtents.X), s.Apply(HalfExtents.Y), s.Apply(HalfExtents.Z)), true);
 
-        /// <summary>Creates a box rotated by the quaternion (x, y, z, w), which is normalised here and must be finite and non-zero.</summary>
-        public static Obb3 FromQuaternion(Vector3D center, double x, double y, double z, double w, Vector3D halfExtents)
+        /// <summary>
+        /// Creates a box rotated by the quaternion (x, y, z, w), normalised here: any finite, non-zero size works, 1e-200
+        /// and 1e200 included. Throws <see cref="ArgumentException"/> naming the first non-finite component, or
+        /// <paramref name="w"/> when all four are zero.
+        /// </summary>
+        public static Obb3 FromQuaternion(Vector3D center, double x, double y, double z, double w, Vector3D halfExtents) =>
+            Rotated(center, x, y, z, w, halfExtents, null);
+
+        /// <summary><see cref="FromQuaternion"/>, reporting a bad quaternion as <paramref name="rotation"/> when given (else by component).</summary>
+        private static Obb3 Rotated(Vector3D center, double x, double y, double z, double w, Vector3D halfExtents, string? rotation)
         {
             Num.Finite(center, nameof(center));
             CheckHalfExtents(halfExtents);
-            double n2 = x * x + y * y + z * z + w * w;
-            if (!double.IsFinite(n2) || n2 == 0)
-                throw new ArgumentException("rotation must be a finite, non-zero quaternion.", "rotation");
-            double s = 2 / n2; // folds the normalisation into the usual 2·q·q products
+            CheckComponent(x, nameof(x), rotation);
+            CheckComponent(y, nameof(y), rotation);
+            CheckComponent(z, nameof(z), rotation);
+            CheckComponent(w, nameof(w), rotation);
+            double m = Math.Max(Math.Max(Math.Abs(x), Math.Abs(y)), Math.Max(Math.Abs(z), Math.Abs(w)));
+            if (m == 0) throw new ArgumentException("the rotation quaternion must be non-zero (x = y = z = w = 0).", rotation ?? nameof(w));
+            // Scaling by a power of two is exact, so the result keeps its bits wherever |q|² was in range already; it keeps
+            // |q|² from overflowing or underflowing for quaternions far from unit size.
+            double k = Num.InversePowerOfTwo(m);
+            x *= k; y *= k; z *= k; w *= k;
+            double s = 2 / (x * x + y * y + z * z + w * w); // folds the normalisation into the usual 2·q·q products
             double xx = x * x * s, yy = y * y * s, zz = z * z * s;
             double xy = x * y * s, xz = x * z * s, yz = y * z * s;
             double wx = w * x * s, wy = w * y * s, wz = w * z * s;
@@ -97,7 +116,8 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// The paper's form: the box's corners and its three face normals (<paramref name="axisX"/>, <paramref name="axisY"/>, <paramref name="axisZ"/>). The result is the smallest box with
-        /// those axes containing every corner, which is the box itself when the corners are a box's corners.
+        /// those axes containing every corner, which is the box itself when the corners are a box's corners. The normals
+        /// are validated and re-orthonormalised as by the axes constructor.
         /// </summary>
         public static Obb3 FromCorners(ReadOnlySpan<Vector3D> corners, Vector3D axisX, Vector3D axisY, Vector3D axisZ)
         {
@@ -106,14 +126,15 @@ namespace ProximityLib.Double
             var sum = default(Vector3D);
             for (int i = 0; i < 8; i++)
             {
-                Num.Finite(corners[i], nameof(corners));
-                sum += corners[i];
+                var c = Spans.At(corners, i);
+                Num.Finite(c, nameof(corners));
+                sum += c;
             }
             var center = sum * 0.125;
             double hx = 0, hy = 0, hz = 0;
             for (int i = 0; i < 8; i++)
             {
-                var d = corners[i] - center;
+                var d = Spans.At(corners, i) - center;
                 hx = Math.Max(hx, Math.Abs(Vector3D.Dot(d, frame._x)));
                 hy = Math.Max(hy, Math.Abs(Vector3D.Dot(d, frame._y)));
                 hz = Math.Max(hz, Math.Abs(Vector3D.Dot(d, frame._z)));
@@ -130,17 +151,26 @@ namespace ProximityLib.Double
                 throw new ArgumentException($"halfExtents must be non-negative (got {h}).", "halfExtents");
         }
 
-        internal static void CheckUnit(Vector3D a, string name)
+        /// <summary>a / |a| for a finite, non-zero a of any size (scaled by a power of two first, so |a|² stays in range).</summary>
+        internal static Vector3D Direction(Vector3D a, string name)
         {
             Num.Finite(a, name);
-            if (!(Math.Abs(a.LengthSquared - 1) <= AxisTolerance))
-                throw new ArgumentException($"{name} must be a unit vector within {AxisTolerance} (|a|² = {a.LengthSquared:R}).", name);
+            double m = Math.Max(Math.Abs(a.X), Math.Max(Math.Abs(a.Y), Math.Abs(a.Z)));
+            if (m == 0) throw new ArgumentException($"{name} must be non-zero.", name);
+            a *= Num.InversePowerOfTwo(m);
+            return a / a.Length;
+        }
+
+        private static void CheckComponent(double value, string component, string? rotation)
+        {
+            if (!double.IsFinite(value))
+                throw new ArgumentException($"the rotation quaternion's {component} must be finite (got {value}).", rotation ?? component);
         }
 
         private static void CheckOrthogonal(Vector3D a, Vector3D b, string name)
         {
             if (!(Math.Abs(Vector3D.Dot(a, b)) <= AxisTolerance))
-                throw new ArgumentException($"{name} must be orthogonal to the other axes within {AxisTolerance}.", name);
+                throw new ArgumentException($"{name} must be orthogonal to the other axes within {AxisTolerance} (after normalising).", name);
         }
     }
 }
