@@ -11,51 +11,21 @@ namespace ProximityLib.Demo
     /// <summary>The main command: runs the gait scene, prints its summary, writes the per-frame CSV and the plot.</summary>
     internal static class GaitCommand
     {
-        public static void PrintOptions()
+        public static int Run(GaitOptions options)
         {
-            Console.WriteLine("         --cadence N        steps per minute (default: the recording's)");
-            Console.WriteLine("         --speed V          walking speed in m/s instead of cadence (the stride is the recorded one)");
-            Console.WriteLine("         --foot-length M    heel–toe length in m: scales the foot and its path (default: the recorded 0.288)");
-            Console.WriteLine("         --frames N         frames per cycle (default 200)");
-            Console.WriteLine("         --tolerance MM     contact tolerance in mm (default 5)");
-            Console.WriteLine("         --out DIR          where gait.csv and gait.png go (default gait-output)");
-        }
-
-        public static int Run(string[] args)
-        {
-            double? cadence = null, speed = null, footLength = null;
-            int frames = 200;
-            double toleranceMm = GaitSimulation.DefaultContactTolerance * 1000;
-            string outDir = "gait-output";
-            for (int i = 0; i < args.Length; i++)
-            {
-                string name = args[i];
-                if (i + 1 >= args.Length) return Fail($"'{name}' needs a value (try --help)");
-                string value = args[++i];
-                bool ok = double.TryParse(value, NumberStyles.Float, CultureInfo.InvariantCulture, out double number) && double.IsFinite(number);
-                switch (name)
-                {
-                    case "--cadence" when ok: cadence = number; break;
-                    case "--speed" when ok: speed = number; break;
-                    case "--foot-length" when ok: footLength = number; break;
-                    case "--tolerance" when ok: toleranceMm = number; break;
-                    case "--frames" when int.TryParse(value, NumberStyles.Integer, CultureInfo.InvariantCulture, out int n): frames = n; break;
-                    case "--out": outDir = value; break;
-                    case "--cadence": case "--speed": case "--foot-length": case "--tolerance": case "--frames":
-                        return Fail($"'{name} {value}': '{value}' is not a number");
-                    default: return Fail($"unknown option '{name}' (try --help)");
-                }
-            }
-
             GaitSimulation sim;
             try
             {
-                sim = new GaitSimulation(cadence, speed, footLength, frames, toleranceMm / 1000);
+                sim = options.CreateSimulation();
             }
             catch (Exception e) when (e is ArgumentException || e is InvalidOperationException)
             {
                 return Fail(e.Message);
             }
+            // Before any output: a bad folder found after the run would waste it and leave a half-written result.
+            string outDir = options.OutputFolder;
+            if (CannotWrite(outDir) is string problem) return Fail($"--out '{outDir}': {problem}");
+            int frames = sim.FrameCount;
 
             var ev = sim.Events;
             var w = Console.Out;
@@ -74,7 +44,6 @@ namespace ProximityLib.Demo
             w.WriteLine();
             w.WriteLine($"  minimum toe clearance in mid swing ({GaitNorms.MidSwingStart}–{GaitNorms.MidSwingEnd} %): {ev.MinToeClearance * 1000:0.0} mm at {ev.MinToeClearancePercent:0.0} %");
 
-            Directory.CreateDirectory(outDir);
             var csv = new StringBuilder("frame,percent,time_s,heel_x_m,heel_y_m,pitch_deg,heel_dist_mm,sole_dist_mm,toe_dist_mm,heel_contact,sole_contact,toe_contact\n");
             var percent = new double[frames];
             var dist = new double[3][] { new double[frames], new double[frames], new double[frames] };
@@ -140,6 +109,23 @@ namespace ProximityLib.Demo
             }
             GC.KeepAlive(sink);
             return clock.Elapsed.TotalMilliseconds * 1e6 / frames;
+        }
+
+        // Null when a file can be created in the folder (made if missing); otherwise why not, in a few words.
+        private static string? CannotWrite(string folder)
+        {
+            if (File.Exists(folder)) return "is a file, not a folder";
+            try
+            {
+                Directory.CreateDirectory(folder);
+                using (new FileStream(Path.Combine(folder, $".write-test-{Guid.NewGuid():N}"), FileMode.CreateNew, FileAccess.Write,
+                           FileShare.None, 1, FileOptions.DeleteOnClose)) { }
+                return null;
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is ArgumentException || e is NotSupportedException)
+            {
+                return $"cannot write there ({e.Message})";
+            }
         }
 
         private static int Fail(string message)

@@ -5,6 +5,7 @@ using System.Linq;
 using System.Numerics;
 using ProximityLib;
 using ProximityLib.Demo;
+using ProximityLib.Scenes.Gait;
 using ProximityLib.Scenes.Picker;
 
 // The project's sample program. With no command it runs the foot–ground gait simulation (GaitCommand.cs);
@@ -13,25 +14,34 @@ using ProximityLib.Scenes.Picker;
 CultureInfo.DefaultThreadCurrentCulture = CultureInfo.InvariantCulture;
 CultureInfo.CurrentCulture = CultureInfo.InvariantCulture;
 
-if (args.Length > 0 && (args[0] == "--help" || args[0] == "-h"))
-{
-    Console.WriteLine("usage: ProximityLib.Demo [gait options]        the foot–ground gait simulation (the default)");
-    GaitCommand.PrintOptions();
-    Console.WriteLine("       ProximityLib.Demo picker [--proximity] [--svg FILE] A B  closest distance (or overlap verdict) of two shapes;");
-    Console.WriteLine("                                     --svg also draws them as the picker shows them (view along +z)");
-    Console.WriteLine("       ProximityLib.Demo samples         print a few sample queries");
-    Console.WriteLine("shapes: point:x,y[,z]  segment:x1,y1[,z1],x2,y2[,z2]  circle:x,y,r  sphere:x,y,z,r");
-    Console.WriteLine("        aabb:minX,minY[,minZ],maxX,maxY[,maxZ]  obb:cx,cy,angle,hx,hy  obb:cx,cy,cz,qx,qy,qz,qw,hx,hy,hz");
-    return 0;
-}
 if (args.Length > 0 && args[0] == "picker") return Picker(args.Skip(1).ToArray());
 if (args.Length > 0 && args[0] == "samples") return Samples();
-if (args.Length > 0 && !args[0].StartsWith("--", StringComparison.Ordinal))
+if (args.Length > 0 && !args[0].StartsWith("-", StringComparison.Ordinal))
 {
     Console.Error.WriteLine($"error: unknown command '{args[0]}' (try --help)");
     return 2;
 }
-return GaitCommand.Run(args);
+GaitOptions options;
+try
+{
+    options = GaitOptions.Parse(args);
+}
+catch (FormatException e)
+{
+    Console.Error.WriteLine($"error: {e.Message}");
+    return 2;
+}
+if (options.Help)
+{
+    Console.WriteLine("usage: ProximityLib.Demo [gait options]        the foot–ground gait simulation (the default)");
+    foreach (var line in GaitOptions.HelpLines()) Console.WriteLine($"         {line}");
+    Console.WriteLine("       ProximityLib.Demo picker [--proximity] [--svg FILE] A B");
+    Console.WriteLine("                                         closest distance (or overlap verdict) of two shapes, e.g.");
+    Console.WriteLine("                                         picker sphere:0,0,0,1 aabb:2,0,0,3,1,1; picker --help lists the shapes");
+    Console.WriteLine("       ProximityLib.Demo samples         print a few sample queries");
+    return 0;
+}
+return GaitCommand.Run(options);
 
 static int Samples()
 {
@@ -63,34 +73,26 @@ static void Print(string name, DistanceResult3 r, bool overlaps) =>
 
 static int Picker(string[] args)
 {
-    bool proximity = args.Contains("--proximity");
-    int svgAt = Array.IndexOf(args, "--svg");
-    string? svg = svgAt >= 0 && svgAt + 1 < args.Length ? args[svgAt + 1] : null;
-    var specs = args.Where((a, i) => a != "--proximity" && (svgAt < 0 || (i != svgAt && i != svgAt + 1))).ToArray();
-    if (specs.Length != 2)
-    {
-        Console.Error.WriteLine("error: picker needs two shapes, e.g. picker sphere:0,0,0,1 aabb:2,0,0,3,1,1");
-        return 2;
-    }
-    object first, second;
+    PickerOptions options;
     try
     {
-        first = ShapeSpec.Parse(specs[0]);
-        second = ShapeSpec.Parse(specs[1]);
+        options = PickerOptions.Parse(args);
     }
     catch (FormatException e)
     {
         Console.Error.WriteLine($"error: {e.Message}");
         return 2;
     }
-    if (ShapeSpec.Dimension(first) != ShapeSpec.Dimension(second))
+    if (options.Help)
     {
-        Console.Error.WriteLine($"error: '{specs[0]}' is {ShapeSpec.Dimension(first)}D and '{specs[1]}' is {ShapeSpec.Dimension(second)}D: pick two shapes of the same dimension");
-        return 2;
+        foreach (var line in PickerOptions.HelpLines()) Console.WriteLine(line);
+        return 0;
     }
+    object first = options.First!, second = options.Second!;
+    bool proximity = options.Proximity;
     bool overlaps = ProximityQuery.Overlaps((dynamic)first, (dynamic)second);
     dynamic r = ClosestDistance.Between((dynamic)first, (dynamic)second);
-    if (svg != null)
+    if (options.SvgFile is string svg)
     {
         Vector3 To3(dynamic p) => p is Vector2 v ? new Vector3(v, 0) : (Vector3)p;
         var view = new PickerView(proximity ? PickerMode.ProximityQuery : PickerMode.ClosestDistance, (float)r.Distance, To3(r.PointA), To3(r.PointB), overlaps);

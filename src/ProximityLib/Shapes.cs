@@ -7,7 +7,8 @@ using Dbl = ProximityLib.Double;
 namespace ProximityLib
 {
     /// <summary>A closed 3D line segment from <see cref="Start"/> (parameter 0) to <see cref="End"/> (parameter 1); may have zero length.</summary>
-    public readonly struct Segment3
+    [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
+    public readonly struct Segment3 : IEquatable<Segment3>, IFormattable
     {
         internal readonly Dbl.Segment3 Inner;
         /// <summary>Creates a segment; throws <see cref="ArgumentException"/> on non-finite endpoints.</summary>
@@ -20,10 +21,28 @@ namespace ProximityLib
         public Vector3 PointAt(float t) => (Vector3)Inner.PointAt(t);
         /// <summary>The same segment in double precision.</summary>
         public static implicit operator Dbl.Segment3(Segment3 s) => s.Inner;
+
+        // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.
+        /// <summary>Value equality: every stored field equal under IEEE == (so −0 equals 0).</summary>
+        public bool Equals(Segment3 other) => Inner.Equals(other.Inner);
+        /// <summary>True when <paramref name="obj"/> is an equal <see cref="Segment3"/>.</summary>
+        public override bool Equals(object? obj) => obj is Segment3 other && Equals(other);
+        /// <summary>A hash consistent with <see cref="Equals(Segment3)"/>.</summary>
+        public override int GetHashCode() => Inner.GetHashCode();
+        /// <summary>Value equality, as <see cref="Equals(Segment3)"/>.</summary>
+        public static bool operator ==(Segment3 a, Segment3 b) => a.Equals(b);
+        /// <summary>Value inequality, as not <see cref="Equals(Segment3)"/>.</summary>
+        public static bool operator !=(Segment3 a, Segment3 b) => !a.Equals(b);
+        /// <summary>The shape as text in the invariant culture with round-trip numbers, e.g. <c>Segment3 { Start = …, … }</c>.</summary>
+        public override string ToString() => ToString(null, null);
+        /// <summary>The shape as text, each number in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null).</summary>
+        public string ToString(string? format, IFormatProvider? formatProvider) =>
+            $"Segment3 {{ Start = {Formatting.Of(Start, format, formatProvider)}, End = {Formatting.Of(End, format, formatProvider)} }}";
     }
 
     /// <summary>A closed 2D line segment from <see cref="Start"/> (parameter 0) to <see cref="End"/> (parameter 1); may have zero length.</summary>
-    public readonly struct Segment2
+    [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
+    public readonly struct Segment2 : IEquatable<Segment2>, IFormattable
     {
         internal readonly Dbl.Segment2 Inner;
         /// <summary>Creates a segment; throws <see cref="ArgumentException"/> on non-finite endpoints.</summary>
@@ -36,10 +55,28 @@ namespace ProximityLib
         public Vector2 PointAt(float t) => (Vector2)Inner.PointAt(t);
         /// <summary>The same segment in double precision.</summary>
         public static implicit operator Dbl.Segment2(Segment2 s) => s.Inner;
+
+        // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.
+        /// <summary>Value equality: every stored field equal under IEEE == (so −0 equals 0).</summary>
+        public bool Equals(Segment2 other) => Inner.Equals(other.Inner);
+        /// <summary>True when <paramref name="obj"/> is an equal <see cref="Segment2"/>.</summary>
+        public override bool Equals(object? obj) => obj is Segment2 other && Equals(other);
+        /// <summary>A hash consistent with <see cref="Equals(Segment2)"/>.</summary>
+        public override int GetHashCode() => Inner.GetHashCode();
+        /// <summary>Value equality, as <see cref="Equals(Segment2)"/>.</summary>
+        public static bool operator ==(Segment2 a, Segment2 b) => a.Equals(b);
+        /// <summary>Value inequality, as not <see cref="Equals(Segment2)"/>.</summary>
+        public static bool operator !=(Segment2 a, Segment2 b) => !a.Equals(b);
+        /// <summary>The shape as text in the invariant culture with round-trip numbers, e.g. <c>Segment2 { Start = …, … }</c>.</summary>
+        public override string ToString() => ToString(null, null);
+        /// <summary>The shape as text, each number in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null).</summary>
+        public string ToString(string? format, IFormatProvider? formatProvider) =>
+            $"Segment2 {{ Start = {Formatting.Of(Start, format, formatProvider)}, End = {Formatting.Of(End, format, formatProvider)} }}";
     }
 
     /// <summary>A closed solid sphere; radius 0 is a point.</summary>
-    public readonly struct Sphere
+    [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
+    public readonly struct Sphere : IEquatable<Sphere>, IFormattable
     {
         internal readonly Dbl.Sphere Inner;
         /// <summary>Creates a sphere; throws <see cref="ArgumentException"/> on a non-finite center or a negative or non-finite radius.</summary>
@@ -50,10 +87,28 @@ namespace ProximityLib
         public float Radius => (float)Inner.Radius;
         /// <summary>The same sphere in double precision.</summary>
         public static implicit operator Dbl.Sphere(Sphere s) => s.Inner;
+
+        // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.
+        /// <summary>Value equality: every stored field equal under IEEE == (so −0 equals 0).</summary>
+        public bool Equals(Sphere other) => Inner.Equals(other.Inner);
+        /// <summary>True when <paramref name="obj"/> is an equal <see cref="Sphere"/>.</summary>
+        public override bool Equals(object? obj) => obj is Sphere other && Equals(other);
+        /// <summary>A hash consistent with <see cref="Equals(Sphere)"/>.</summary>
+        public override int GetHashCode() => Inner.GetHashCode();
+        /// <summary>Value equality, as <see cref="Equals(Sphere)"/>.</summary>
+        public static bool operator ==(Sphere a, Sphere b) => a.Equals(b);
+        /// <summary>Value inequality, as not <see cref="Equals(Sphere)"/>.</summary>
+        public static bool operator !=(Sphere a, Sphere b) => !a.Equals(b);
+        /// <summary>The shape as text in the invariant culture with round-trip numbers, e.g. <c>Sphere { Center = …, … }</c>.</summary>
+        public override string ToString() => ToString(null, null);
+        /// <summary>The shape as text, each number in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null).</summary>
+        public string ToString(string? format, IFormatProvider? formatProvider) =>
+            $"Sphere {{ Center = {Formatting.Of(Center, format, formatProvider)}, Radius = {Formatting.Of(Radius, format, formatProvider)} }}";
     }
 
     /// <summary>A closed solid disc (the paper's circle); radius 0 is a point.</summary>
-    public readonly struct Circle
+    [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
+    public readonly struct Circle : IEquatable<Circle>, IFormattable
     {
         internal readonly Dbl.Circle Inner;
         /// <summary>Creates a circle; throws <see cref="ArgumentException"/> on a non-finite center or a negative or non-finite radius.</summary>
@@ -64,10 +119,28 @@ namespace ProximityLib
         public float Radius => (float)Inner.Radius;
         /// <summary>The same circle in double precision.</summary>
         public static implicit operator Dbl.Circle(Circle c) => c.Inner;
+
+        // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.
+        /// <summary>Value equality: every stored field equal under IEEE == (so −0 equals 0).</summary>
+        public bool Equals(Circle other) => Inner.Equals(other.Inner);
+        /// <summary>True when <paramref name="obj"/> is an equal <see cref="Circle"/>.</summary>
+        public override bool Equals(object? obj) => obj is Circle other && Equals(other);
+        /// <summary>A hash consistent with <see cref="Equals(Circle)"/>.</summary>
+        public override int GetHashCode() => Inner.GetHashCode();
+        /// <summary>Value equality, as <see cref="Equals(Circle)"/>.</summary>
+        public static bool operator ==(Circle a, Circle b) => a.Equals(b);
+        /// <summary>Value inequality, as not <see cref="Equals(Circle)"/>.</summary>
+        public static bool operator !=(Circle a, Circle b) => !a.Equals(b);
+        /// <summary>The shape as text in the invariant culture with round-trip numbers, e.g. <c>Circle { Center = …, … }</c>.</summary>
+        public override string ToString() => ToString(null, null);
+        /// <summary>The shape as text, each number in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null).</summary>
+        public string ToString(string? format, IFormatProvider? formatProvider) =>
+            $"Circle {{ Center = {Formatting.Of(Center, format, formatProvider)}, Radius = {Formatting.Of(Radius, format, formatProvider)} }}";
     }
 
     /// <summary>A closed solid axis-aligned box [Min, Max]; zero extents are allowed.</summary>
-    public readonly struct Aabb3
+    [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
+    public readonly struct Aabb3 : IEquatable<Aabb3>, IFormattable
     {
         internal readonly Dbl.Aabb3 Inner;
         private Aabb3(Dbl.Aabb3 inner) { Inner = inner; }
@@ -84,10 +157,28 @@ namespace ProximityLib
         public Vector3 Max => (Vector3)Inner.Max;
         /// <summary>The same box in double precision.</summary>
         public static implicit operator Dbl.Aabb3(Aabb3 b) => b.Inner;
+
+        // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.
+        /// <summary>Value equality of the stored double-precision corners, which the queries use (IEEE ==, so −0 equals 0): FromOrigin and FromCenter can keep corners between floats, so two boxes that print alike can differ.</summary>
+        public bool Equals(Aabb3 other) => Inner.Equals(other.Inner);
+        /// <summary>True when <paramref name="obj"/> is an equal <see cref="Aabb3"/>.</summary>
+        public override bool Equals(object? obj) => obj is Aabb3 other && Equals(other);
+        /// <summary>A hash consistent with <see cref="Equals(Aabb3)"/>.</summary>
+        public override int GetHashCode() => Inner.GetHashCode();
+        /// <summary>Value equality, as <see cref="Equals(Aabb3)"/>.</summary>
+        public static bool operator ==(Aabb3 a, Aabb3 b) => a.Equals(b);
+        /// <summary>Value inequality, as not <see cref="Equals(Aabb3)"/>.</summary>
+        public static bool operator !=(Aabb3 a, Aabb3 b) => !a.Equals(b);
+        /// <summary>The shape as text in the invariant culture with round-trip numbers, e.g. <c>Aabb3 { Min = …, … }</c>.</summary>
+        public override string ToString() => ToString(null, null);
+        /// <summary>The shape as text, each number in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null).</summary>
+        public string ToString(string? format, IFormatProvider? formatProvider) =>
+            $"Aabb3 {{ Min = {Formatting.Of(Min, format, formatProvider)}, Max = {Formatting.Of(Max, format, formatProvider)} }}";
     }
 
     /// <summary>A closed solid axis-aligned rectangle [Min, Max]; zero extents are allowed.</summary>
-    public readonly struct Aabb2
+    [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
+    public readonly struct Aabb2 : IEquatable<Aabb2>, IFormattable
     {
         internal readonly Dbl.Aabb2 Inner;
         private Aabb2(Dbl.Aabb2 inner) { Inner = inner; }
@@ -103,10 +194,28 @@ namespace ProximityLib
         public Vector2 Max => (Vector2)Inner.Max;
         /// <summary>The same rectangle in double precision.</summary>
         public static implicit operator Dbl.Aabb2(Aabb2 b) => b.Inner;
+
+        // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.
+        /// <summary>Value equality of the stored double-precision corners, which the queries use (IEEE ==, so −0 equals 0): FromOrigin and FromCenter can keep corners between floats, so two boxes that print alike can differ.</summary>
+        public bool Equals(Aabb2 other) => Inner.Equals(other.Inner);
+        /// <summary>True when <paramref name="obj"/> is an equal <see cref="Aabb2"/>.</summary>
+        public override bool Equals(object? obj) => obj is Aabb2 other && Equals(other);
+        /// <summary>A hash consistent with <see cref="Equals(Aabb2)"/>.</summary>
+        public override int GetHashCode() => Inner.GetHashCode();
+        /// <summary>Value equality, as <see cref="Equals(Aabb2)"/>.</summary>
+        public static bool operator ==(Aabb2 a, Aabb2 b) => a.Equals(b);
+        /// <summary>Value inequality, as not <see cref="Equals(Aabb2)"/>.</summary>
+        public static bool operator !=(Aabb2 a, Aabb2 b) => !a.Equals(b);
+        /// <summary>The shape as text in the invariant culture with round-trip numbers, e.g. <c>Aabb2 { Min = …, … }</c>.</summary>
+        public override string ToString() => ToString(null, null);
+        /// <summary>The shape as text, each number in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null).</summary>
+        public string ToString(string? format, IFormatProvider? formatProvider) =>
+            $"Aabb2 {{ Min = {Formatting.Of(Min, format, formatProvider)}, Max = {Formatting.Of(Max, format, formatProvider)} }}";
     }
 
     /// <summary>A closed solid oriented box; see <see cref="Dbl.Obb3"/>. Axes are kept orthonormal in double.</summary>
-    public readonly struct Obb3
+    [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
+    public readonly struct Obb3 : IEquatable<Obb3>, IFormattable
     {
         internal readonly Dbl.Obb3 Inner;
         private Obb3(Dbl.Obb3 inner) { Inner = inner; }
@@ -137,10 +246,28 @@ namespace ProximityLib
         public Vector3 HalfExtents => (Vector3)Inner.HalfExtents;
         /// <summary>The same box in double precision.</summary>
         public static implicit operator Dbl.Obb3(Obb3 b) => b.Inner;
+
+        // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.
+        /// <summary>Value equality of the stored double-precision box, which the queries use (see <see cref="Dbl.Obb3.Equals(Dbl.Obb3)"/>): its axes can differ below float precision, so two boxes that print alike can differ.</summary>
+        public bool Equals(Obb3 other) => Inner.Equals(other.Inner);
+        /// <summary>True when <paramref name="obj"/> is an equal <see cref="Obb3"/>.</summary>
+        public override bool Equals(object? obj) => obj is Obb3 other && Equals(other);
+        /// <summary>A hash consistent with <see cref="Equals(Obb3)"/>.</summary>
+        public override int GetHashCode() => Inner.GetHashCode();
+        /// <summary>Value equality, as <see cref="Equals(Obb3)"/>.</summary>
+        public static bool operator ==(Obb3 a, Obb3 b) => a.Equals(b);
+        /// <summary>Value inequality, as not <see cref="Equals(Obb3)"/>.</summary>
+        public static bool operator !=(Obb3 a, Obb3 b) => !a.Equals(b);
+        /// <summary>The shape as text in the invariant culture with round-trip numbers, e.g. <c>Obb3 { Center = …, … }</c>.</summary>
+        public override string ToString() => ToString(null, null);
+        /// <summary>The shape as text, each number in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null).</summary>
+        public string ToString(string? format, IFormatProvider? formatProvider) =>
+            $"Obb3 {{ Center = {Formatting.Of(Center, format, formatProvider)}, AxisX = {Formatting.Of(AxisX, format, formatProvider)}, AxisY = {Formatting.Of(AxisY, format, formatProvider)}, AxisZ = {Formatting.Of(AxisZ, format, formatProvider)}, HalfExtents = {Formatting.Of(HalfExtents, format, formatProvider)} }}";
     }
 
     /// <summary>A closed solid oriented rectangle; see <see cref="Dbl.Obb2"/>.</summary>
-    public readonly struct Obb2
+    [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
+    public readonly struct Obb2 : IEquatable<Obb2>, IFormattable
     {
         internal readonly Dbl.Obb2 Inner;
         private Obb2(Dbl.Obb2 inner) { Inner = inner; }
@@ -166,5 +293,22 @@ namespace ProximityLib
         public Vector2 HalfExtents => (Vector2)Inner.HalfExtents;
         /// <summary>The same box in double precision.</summary>
         public static implicit operator Dbl.Obb2(Obb2 b) => b.Inner;
+
+        // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.
+        /// <summary>Value equality of the stored double-precision box, which the queries use (see <see cref="Dbl.Obb2.Equals(Dbl.Obb2)"/>): its axes can differ below float precision, so two boxes that print alike can differ.</summary>
+        public bool Equals(Obb2 other) => Inner.Equals(other.Inner);
+        /// <summary>True when <paramref name="obj"/> is an equal <see cref="Obb2"/>.</summary>
+        public override bool Equals(object? obj) => obj is Obb2 other && Equals(other);
+        /// <summary>A hash consistent with <see cref="Equals(Obb2)"/>.</summary>
+        public override int GetHashCode() => Inner.GetHashCode();
+        /// <summary>Value equality, as <see cref="Equals(Obb2)"/>.</summary>
+        public static bool operator ==(Obb2 a, Obb2 b) => a.Equals(b);
+        /// <summary>Value inequality, as not <see cref="Equals(Obb2)"/>.</summary>
+        public static bool operator !=(Obb2 a, Obb2 b) => !a.Equals(b);
+        /// <summary>The shape as text in the invariant culture with round-trip numbers, e.g. <c>Obb2 { Center = …, … }</c>.</summary>
+        public override string ToString() => ToString(null, null);
+        /// <summary>The shape as text, each number in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null).</summary>
+        public string ToString(string? format, IFormatProvider? formatProvider) =>
+            $"Obb2 {{ Center = {Formatting.Of(Center, format, formatProvider)}, AxisX = {Formatting.Of(AxisX, format, formatProvider)}, HalfExtents = {Formatting.Of(HalfExtents, format, formatProvider)} }}";
     }
 }

@@ -73,6 +73,9 @@ namespace ProximityLib.Scenes.Gait
         /// </summary>
         public const double DefaultContactTolerance = 0.002;
 
+        /// <summary>The default number of frames per cycle.</summary>
+        public const int DefaultFrames = 200;
+
         // Time resolution of the event search, in recorded samples (1/60 s): far below a frame.
         private const double EventResolution = 1e-6;
         // Debouncing, as foot-switch processing does: a contact must last 50 ms and the swing 100 ms to count.
@@ -87,7 +90,7 @@ namespace ProximityLib.Scenes.Gait
         /// with neither, the recording's own timing is used. <paramref name="footLength"/> scales the whole foot and its
         /// path uniformly (heel–toe marker distance, m). <paramref name="frames"/> frames cover one cycle.
         /// </summary>
-        public GaitSimulation(double? cadence = null, double? speed = null, double? footLength = null, int frames = 200,
+        public GaitSimulation(double? cadence = null, double? speed = null, double? footLength = null, int frames = DefaultFrames,
             double contactTolerance = DefaultContactTolerance)
         {
             if (cadence.HasValue && speed.HasValue)

@@ -8,7 +8,8 @@ namespace ProximityLib.Double
     /// −Distance; PointA lies in A, PointB in B, and moving A by PointB − PointA (length −Distance) makes the shapes
     /// just touch: that is the minimum translation.
     /// </summary>
-    public readonly struct DistanceResult3
+    [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
+    public readonly struct DistanceResult3 : System.IEquatable<DistanceResult3>, System.IFormattable
     {
         /// <summary>Signed distance: the gap when separated, 0 when touching, minus the penetration depth when overlapping.</summary>
         public readonly double Distance;
@@ -38,10 +39,28 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal DistanceResult2 To2() =>
             new DistanceResult2(Distance, DistanceSquared, Vector2D.From3(PointA), Vector2D.From3(PointB), ParameterA, ParameterB);
+
+        // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.
+        /// <summary>Value equality: every stored field equal under IEEE == (so −0 equals 0).</summary>
+        public bool Equals(DistanceResult3 other) => Distance == other.Distance && DistanceSquared == other.DistanceSquared && PointA == other.PointA && PointB == other.PointB && ParameterA == other.ParameterA && ParameterB == other.ParameterB;
+        /// <summary>True when <paramref name="obj"/> is an equal <see cref="DistanceResult3"/>.</summary>
+        public override bool Equals(object? obj) => obj is DistanceResult3 other && Equals(other);
+        /// <summary>A hash consistent with <see cref="Equals(DistanceResult3)"/>.</summary>
+        public override int GetHashCode() => System.HashCode.Combine(Distance, DistanceSquared, PointA, PointB, ParameterA, ParameterB);
+        /// <summary>Value equality, as <see cref="Equals(DistanceResult3)"/>.</summary>
+        public static bool operator ==(DistanceResult3 a, DistanceResult3 b) => a.Equals(b);
+        /// <summary>Value inequality, as not <see cref="Equals(DistanceResult3)"/>.</summary>
+        public static bool operator !=(DistanceResult3 a, DistanceResult3 b) => !a.Equals(b);
+        /// <summary>The result as text in the invariant culture with round-trip numbers, e.g. <c>DistanceResult3 { Distance = …, … }</c>.</summary>
+        public override string ToString() => ToString(null, null);
+        /// <summary>The result as text, each number in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null).</summary>
+        public string ToString(string? format, System.IFormatProvider? formatProvider) =>
+            $"DistanceResult3 {{ Distance = {Formatting.Of(Distance, format, formatProvider)}, DistanceSquared = {Formatting.Of(DistanceSquared, format, formatProvider)}, PointA = {Formatting.Of(PointA, format, formatProvider)}, PointB = {Formatting.Of(PointB, format, formatProvider)}, ParameterA = {Formatting.Of(ParameterA, format, formatProvider)}, ParameterB = {Formatting.Of(ParameterB, format, formatProvider)} }}";
     }
 
     /// <summary>The answer of a 2D closest-distance query; same contract as <see cref="DistanceResult3"/>.</summary>
-    public readonly struct DistanceResult2
+    [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
+    public readonly struct DistanceResult2 : System.IEquatable<DistanceResult2>, System.IFormattable
     {
         /// <summary>Signed distance: the gap when separated, 0 when touching, minus the penetration depth when overlapping.</summary>
         public readonly double Distance;
@@ -67,5 +86,22 @@ namespace ProximityLib.Double
         public bool Overlapping => Distance <= 0;
 
         internal DistanceResult2 Swapped() => new DistanceResult2(Distance, DistanceSquared, PointB, PointA, ParameterB, ParameterA);
+
+        // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.
+        /// <summary>Value equality: every stored field equal under IEEE == (so −0 equals 0).</summary>
+        public bool Equals(DistanceResult2 other) => Distance == other.Distance && DistanceSquared == other.DistanceSquared && PointA == other.PointA && PointB == other.PointB && ParameterA == other.ParameterA && ParameterB == other.ParameterB;
+        /// <summary>True when <paramref name="obj"/> is an equal <see cref="DistanceResult2"/>.</summary>
+        public override bool Equals(object? obj) => obj is DistanceResult2 other && Equals(other);
+        /// <summary>A hash consistent with <see cref="Equals(DistanceResult2)"/>.</summary>
+        public override int GetHashCode() => System.HashCode.Combine(Distance, DistanceSquared, PointA, PointB, ParameterA, ParameterB);
+        /// <summary>Value equality, as <see cref="Equals(DistanceResult2)"/>.</summary>
+        public static bool operator ==(DistanceResult2 a, DistanceResult2 b) => a.Equals(b);
+        /// <summary>Value inequality, as not <see cref="Equals(DistanceResult2)"/>.</summary>
+        public static bool operator !=(DistanceResult2 a, DistanceResult2 b) => !a.Equals(b);
+        /// <summary>The result as text in the invariant culture with round-trip numbers, e.g. <c>DistanceResult2 { Distance = …, … }</c>.</summary>
+        public override string ToString() => ToString(null, null);
+        /// <summary>The result as text, each number in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null).</summary>
+        public string ToString(string? format, System.IFormatProvider? formatProvider) =>
+            $"DistanceResult2 {{ Distance = {Formatting.Of(Distance, format, formatProvider)}, DistanceSquared = {Formatting.Of(DistanceSquared, format, formatProvider)}, PointA = {Formatting.Of(PointA, format, formatProvider)}, PointB = {Formatting.Of(PointB, format, formatProvider)}, ParameterA = {Formatting.Of(ParameterA, format, formatProvider)}, ParameterB = {Formatting.Of(ParameterB, format, formatProvider)} }}";
     }
 }

@@ -4,7 +4,7 @@ using System.Runtime.CompilerServices;
 namespace ProximityLib.Double
 {
     /// <summary>An immutable 2D vector of doubles: the point type of the double-precision 2D API.</summary>
-    public readonly struct Vector2D : IEquatable<Vector2D>, IScalable<Vector2D>
+    public readonly struct Vector2D : IEquatable<Vector2D>, IFormattable, IScalable<Vector2D>
     {
         /// <summary>The X component.</summary>
         public readonly double X;
@@ -74,6 +74,8 @@ namespace ProximityLib.Double
         /// <summary>A hash of the components.</summary>
         public override int GetHashCode() => HashCode.Combine(X, Y);
         /// <summary>Formats as &lt;X, Y&gt; with round-trip precision.</summary>
-        public override string ToString() => FormattableString.Invariant($"<{X:R}, {Y:R}>");
+        public override string ToString() => ToString(null, null);
+        /// <summary>Formats as &lt;X, Y&gt;, each component in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null), separated as System.Numerics does.</summary>
+        public string ToString(string? format, IFormatProvider? formatProvider) => Formatting.Of(this, format, formatProvider);
     }
 }

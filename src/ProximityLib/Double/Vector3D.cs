@@ -4,7 +4,7 @@ using System.Runtime.CompilerServices;
 namespace ProximityLib.Double
 {
     /// <summary>An immutable 3D vector of doubles: the point type of the double-precision API.</summary>
-    public readonly struct Vector3D : IEquatable<Vector3D>, IScalable<Vector3D>
+    public readonly struct Vector3D : IEquatable<Vector3D>, IFormattable, IScalable<Vector3D>
     {
         /// <summary>The X component.</summary>
         public readonly double X;
@@ -91,6 +91,8 @@ namespace ProximityLib.Double
         /// <summary>A hash of the components.</summary>
         public override int GetHashCode() => HashCode.Combine(X, Y, Z);
         /// <summary>Formats as &lt;X, Y, Z&gt; with round-trip precision.</summary>
-        public override string ToString() => FormattableString.Invariant($"<{X:R}, {Y:R}, {Z:R}>");
+        public override string ToString() => ToString(null, null);
+        /// <summary>Formats as &lt;X, Y, Z&gt;, each component in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null), separated as System.Numerics does.</summary>
+        public string ToString(string? format, IFormatProvider? formatProvider) => Formatting.Of(this, format, formatProvider);
     }
 }

@@ -1,20 +1,15 @@
 // Copied from src/ProximityLib.Scenes/Picker/ShapeSpec.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
 #nullable enable
 using System;
+using System.Collections.Generic;
 using System.Globalization;
 using System.Numerics;
 
 namespace ProximityLib.Scenes.Picker
 {
     /// <summary>
-    /// Shapes written as text, for the command line: <c>kind:n1,n2,…</c>. The count of numbers picks the dimension.
-    /// <list type="bullet">
-    /// <item><c>point:x,y</c> or <c>point:x,y,z</c></item>
-    /// <item><c>segment:x1,y1,x2,y2</c> or <c>segment:x1,y1,z1,x2,y2,z2</c></item>
-    /// <item><c>circle:x,y,r</c>, <c>sphere:x,y,z,r</c></item>
-    /// <item><c>aabb:minX,minY,maxX,maxY</c> or <c>aabb:minX,minY,minZ,maxX,maxY,maxZ</c></item>
-    /// <item><c>obb:cx,cy,angle,hx,hy</c> (angle in radians) or <c>obb:cx,cy,cz,qx,qy,qz,qw,hx,hy,hz</c> (quaternion)</item>
-    /// </list>
+    /// Shapes written as text, for the command line: <c>kind:n1,n2,…</c>, one of <see cref="Forms"/>. The count of
+    /// numbers picks the dimension.
     /// </summary>
     public static class ShapeSpec
     {
@@ -58,14 +53,53 @@ namespace ProximityLib.Scenes.Picker
         /// <summary>2 for 2D shapes, 3 for 3D ones.</summary>
         public static int Dimension(object shape) => shape is Vector2 || shape is Segment2 || shape is Circle || shape is Aabb2 || shape is Obb2 ? 2 : 3;
 
-        private static string Counts(string kind) => kind switch
+        /// <summary>Every form <see cref="Parse"/> accepts, with what its numbers mean and an example; the picker's help lists them.</summary>
+        public static IReadOnlyList<ShapeForm> Forms { get; } = new[]
         {
-            "point" => "2 or 3",
-            "segment" => "4 or 6",
-            "circle" => "3",
-            "sphere" => "4",
-            "aabb" => "4 or 6",
-            _ => "5 or 10",
+            new ShapeForm("point:x,y", "2D point", "point:1,2"),
+            new ShapeForm("point:x,y,z", "3D point", "point:1,2,3"),
+            new ShapeForm("segment:x1,y1,x2,y2", "2D segment from (x1,y1) to (x2,y2)", "segment:0,0,4,0"),
+            new ShapeForm("segment:x1,y1,z1,x2,y2,z2", "3D segment from (x1,y1,z1) to (x2,y2,z2)", "segment:0,0,0,1,2,3"),
+            new ShapeForm("circle:x,y,r", "disc: centre, radius (>= 0)", "circle:0,0,1"),
+            new ShapeForm("sphere:x,y,z,r", "ball: centre, radius (>= 0)", "sphere:0,0,0,1"),
+            new ShapeForm("aabb:minX,minY,maxX,maxY", "axis-aligned rectangle: min corner, max corner", "aabb:2,0,3,1"),
+            new ShapeForm("aabb:minX,minY,minZ,maxX,maxY,maxZ", "axis-aligned box: min corner, max corner", "aabb:2,0,0,3,1,1"),
+            new ShapeForm("obb:cx,cy,angle,hx,hy",
+                "oriented rectangle: centre, angle in radians (counter-clockwise from +x), half-extents", "obb:3,0,0.7853982,1,0.5"),
+            new ShapeForm("obb:cx,cy,cz,qx,qy,qz,qw,hx,hy,hz",
+                "oriented box: centre, rotation quaternion in x,y,z,w order (w last; normalised here), half-extents",
+                "obb:3,0,0,0,0,0.3826834,0.9238795,1,1,1"),
         };
+
+        private static string Counts(string kind)
+        {
+            var counts = new List<string>();
+            foreach (var form in Forms)
+                if (form.Kind == kind) counts.Add(form.Count.ToString(CultureInfo.InvariantCulture));
+            return string.Join(" or ", counts);
+        }
+    }
+
+    /// <summary>One form of a shape spec: its syntax, what its numbers mean and an example.</summary>
+    public sealed class ShapeForm
+    {
+        internal ShapeForm(string syntax, string meaning, string example)
+        {
+            Syntax = syntax; Meaning = meaning; Example = example;
+            int colon = syntax.IndexOf(':');
+            Kind = syntax.Substring(0, colon);
+            Count = syntax.Substring(colon + 1).Split(',').Length;
+        }
+
+        /// <summary>The kind before the colon (point, segment, circle, sphere, aabb, obb).</summary>
+        public string Kind { get; }
+        /// <summary>The form, e.g. <c>circle:x,y,r</c>.</summary>
+        public string Syntax { get; }
+        /// <summary>What the numbers are, with units where they matter.</summary>
+        public string Meaning { get; }
+        /// <summary>A spec of this form.</summary>
+        public string Example { get; }
+        /// <summary>How many numbers the form takes.</summary>
+        public int Count { get; }
     }
 }

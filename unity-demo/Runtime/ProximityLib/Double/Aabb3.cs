@@ -5,7 +5,8 @@ using System;
 namespace ProximityLib.Double
 {
     /// <summary>A closed solid axis-aligned box [Min, Max]; zero extents (a face, an edge, a point) are allowed.</summary>
-    public readonly struct Aabb3 : IScalable<Aabb3>
+    [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
+    public readonly struct Aabb3 : IEquatable<Aabb3>, IFormattable, IScalable<Aabb3>
     {
         /// <summary>The minimum corner.</summary>
         public readonly Vector3D Min;
@@ -54,10 +55,28 @@ namespace ProximityLib.Double
         public Vector3D Center => (Min + Max) * 0.5;
 
         internal Box ToBox() => new Box(Min, Vector3D.UnitX, Vector3D.UnitY, Vector3D.UnitZ, default, Max - Min, false);
+
+        // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.
+        /// <summary>Value equality: every stored field equal under IEEE == (so −0 equals 0).</summary>
+        public bool Equals(Aabb3 other) => Min == other.Min && Max == other.Max;
+        /// <summary>True when <paramref name="obj"/> is an equal <see cref="Aabb3"/>.</summary>
+        public override bool Equals(object? obj) => obj is Aabb3 other && Equals(other);
+        /// <summary>A hash consistent with <see cref="Equals(Aabb3)"/>.</summary>
+        public override int GetHashCode() => HashCode.Combine(Min, Max);
+        /// <summary>Value equality, as <see cref="Equals(Aabb3)"/>.</summary>
+        public static bool operator ==(Aabb3 a, Aabb3 b) => a.Equals(b);
+        /// <summary>Value inequality, as not <see cref="Equals(Aabb3)"/>.</summary>
+        public static bool operator !=(Aabb3 a, Aabb3 b) => !a.Equals(b);
+        /// <summary>The shape as text in the invariant culture with round-trip numbers, e.g. <c>Aabb3 { Min = …, … }</c>.</summary>
+        public override string ToString() => ToString(null, null);
+        /// <summary>The shape as text, each number in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null).</summary>
+        public string ToString(string? format, IFormatProvider? formatProvider) =>
+            $"Aabb3 {{ Min = {Formatting.Of(Min, format, formatProvider)}, Max = {Formatting.Of(Max, format, formatProvider)} }}";
     }
 
     /// <summary>A closed solid axis-aligned rectangle [Min, Max]; zero extents (a segment, a point) are allowed.</summary>
-    public readonly struct Aabb2 : IScalable<Aabb2>
+    [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
+    public readonly struct Aabb2 : IEquatable<Aabb2>, IFormattable, IScalable<Aabb2>
     {
         /// <summary>The minimum corner.</summary>
         public readonly Vector2D Min;
@@ -109,5 +128,22 @@ namespace ProximityLib.Double
             var ext = Max - Min;
             return new Box(Min.To3(), Vector3D.UnitX, Vector3D.UnitY, Vector3D.UnitZ, default, new Vector3D(ext.X, ext.Y, 0), true);
         }
+
+        // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.
+        /// <summary>Value equality: every stored field equal under IEEE == (so −0 equals 0).</summary>
+        public bool Equals(Aabb2 other) => Min == other.Min && Max == other.Max;
+        /// <summary>True when <paramref name="obj"/> is an equal <see cref="Aabb2"/>.</summary>
+        public override bool Equals(object? obj) => obj is Aabb2 other && Equals(other);
+        /// <summary>A hash consistent with <see cref="Equals(Aabb2)"/>.</summary>
+        public override int GetHashCode() => HashCode.Combine(Min, Max);
+        /// <summary>Value equality, as <see cref="Equals(Aabb2)"/>.</summary>
+        public static bool operator ==(Aabb2 a, Aabb2 b) => a.Equals(b);
+        /// <summary>Value inequality, as not <see cref="Equals(Aabb2)"/>.</summary>
+        public static bool operator !=(Aabb2 a, Aabb2 b) => !a.Equals(b);
+        /// <summary>The shape as text in the invariant culture with round-trip numbers, e.g. <c>Aabb2 { Min = …, … }</c>.</summary>
+        public override string ToString() => ToString(null, null);
+        /// <summary>The shape as text, each number in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null).</summary>
+        public string ToString(string? format, IFormatProvider? formatProvider) =>
+            $"Aabb2 {{ Min = {Formatting.Of(Min, format, formatProvider)}, Max = {Formatting.Of(Max, format, formatProvider)} }}";
     }
 }

@@ -8,7 +8,8 @@ namespace ProximityLib.Double
     /// A closed solid oriented rectangle: Center + AxisX*u + AxisY*v with |u|, |v| bounded by HalfExtents, where
     /// AxisY is AxisX turned +90°. <c>default</c> is the axis-aligned point box at the origin.
     /// </summary>
-    public readonly struct Obb2 : IScalable<Obb2>
+    [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
+    public readonly struct Obb2 : IEquatable<Obb2>, IFormattable, IScalable<Obb2>
     {
         private readonly double _cos, _sin;
         // default(Obb2) must be valid: without this flag its axis would be zero.
@@ -101,5 +102,22 @@ namespace ProximityLib.Double
             if (h.X < 0 || h.Y < 0)
                 throw new ArgumentException($"halfExtents must be non-negative (got {h}).", "halfExtents");
         }
+
+        // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.
+        /// <summary>Value equality: Center, half-extents and the stored, normalised AxisX equal under IEEE == (so −0 equals 0): boxes built from the same rotation by different routes (angle, axis, corners) can differ in the last bits of their axis.</summary>
+        public bool Equals(Obb2 other) => Center == other.Center && AxisX == other.AxisX && HalfExtents == other.HalfExtents;
+        /// <summary>True when <paramref name="obj"/> is an equal <see cref="Obb2"/>.</summary>
+        public override bool Equals(object? obj) => obj is Obb2 other && Equals(other);
+        /// <summary>A hash consistent with <see cref="Equals(Obb2)"/>.</summary>
+        public override int GetHashCode() => HashCode.Combine(Center, AxisX, HalfExtents);
+        /// <summary>Value equality, as <see cref="Equals(Obb2)"/>.</summary>
+        public static bool operator ==(Obb2 a, Obb2 b) => a.Equals(b);
+        /// <summary>Value inequality, as not <see cref="Equals(Obb2)"/>.</summary>
+        public static bool operator !=(Obb2 a, Obb2 b) => !a.Equals(b);
+        /// <summary>The shape as text in the invariant culture with round-trip numbers, e.g. <c>Obb2 { Center = …, … }</c>.</summary>
+        public override string ToString() => ToString(null, null);
+        /// <summary>The shape as text, each number in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null).</summary>
+        public string ToString(string? format, IFormatProvider? formatProvider) =>
+            $"Obb2 {{ Center = {Formatting.Of(Center, format, formatProvider)}, AxisX = {Formatting.Of(AxisX, format, formatProvider)}, HalfExtents = {Formatting.Of(HalfExtents, format, formatProvider)} }}";
     }
 }

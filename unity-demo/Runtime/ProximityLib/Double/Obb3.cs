@@ -9,7 +9,8 @@ namespace ProximityLib.Double
     /// Axes are stored orthonormal to double precision (given axes are normalised, their directions checked against
     /// <see cref="AxisTolerance"/>, then re-orthonormalised); <c>default</c> is the axis-aligned point box at the origin.
     /// </summary>
-    public readonly struct Obb3 : IScalable<Obb3>
+    [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
+    public readonly struct Obb3 : IEquatable<Obb3>, IFormattable, IScalable<Obb3>
     {
         /// <summary>How far the directions of given axes may be from orthogonal: |â·b̂| at most this, â and b̂ the axes scaled to unit length.</summary>
         public const double AxisTolerance = 1e-4;
@@ -172,5 +173,22 @@ namespace ProximityLib.Double
             if (!(Math.Abs(Vector3D.Dot(a, b)) <= AxisTolerance))
                 throw new ArgumentException($"{name} must be orthogonal to the other axes within {AxisTolerance} (after normalising).", name);
         }
+
+        // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.
+        /// <summary>Value equality: Center, half-extents and the stored, re-orthonormalised axes equal under IEEE == (so −0 equals 0): boxes built from the same rotation by different routes (quaternion, axes, corners) can differ in the last bits of their axes.</summary>
+        public bool Equals(Obb3 other) => Center == other.Center && AxisX == other.AxisX && AxisY == other.AxisY && AxisZ == other.AxisZ && HalfExtents == other.HalfExtents;
+        /// <summary>True when <paramref name="obj"/> is an equal <see cref="Obb3"/>.</summary>
+        public override bool Equals(object? obj) => obj is Obb3 other && Equals(other);
+        /// <summary>A hash consistent with <see cref="Equals(Obb3)"/>.</summary>
+        public override int GetHashCode() => HashCode.Combine(Center, AxisX, AxisY, AxisZ, HalfExtents);
+        /// <summary>Value equality, as <see cref="Equals(Obb3)"/>.</summary>
+        public static bool operator ==(Obb3 a, Obb3 b) => a.Equals(b);
+        /// <summary>Value inequality, as not <see cref="Equals(Obb3)"/>.</summary>
+        public static bool operator !=(Obb3 a, Obb3 b) => !a.Equals(b);
+        /// <summary>The shape as text in the invariant culture with round-trip numbers, e.g. <c>Obb3 { Center = …, … }</c>.</summary>
+        public override string ToString() => ToString(null, null);
+        /// <summary>The shape as text, each number in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null).</summary>
+        public string ToString(string? format, IFormatProvider? formatProvider) =>
+            $"Obb3 {{ Center = {Formatting.Of(Center, format, formatProvider)}, AxisX = {Formatting.Of(AxisX, format, formatProvider)}, AxisY = {Formatting.Of(AxisY, format, formatProvider)}, AxisZ = {Formatting.Of(AxisZ, format, formatProvider)}, HalfExtents = {Formatting.Of(HalfExtents, format, formatProvider)} }}";
     }
 }

@@ -3,7 +3,8 @@
 namespace ProximityLib.Double
 {
     /// <summary>A closed 3D line segment from <see cref="Start"/> (parameter 0) to <see cref="End"/> (parameter 1); may have zero length.</summary>
-    public readonly struct Segment3 : IScalable<Segment3>
+    [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
+    public readonly struct Segment3 : System.IEquatable<Segment3>, System.IFormattable, IScalable<Segment3>
     {
         /// <summary>The endpoint at parameter 0.</summary>
         public readonly Vector3D Start;
@@ -31,10 +32,28 @@ namespace ProximityLib.Double
 
         /// <summary>The segment's length.</summary>
         public double Length => (End - Start).Length;
+
+        // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.
+        /// <summary>Value equality: every stored field equal under IEEE == (so −0 equals 0).</summary>
+        public bool Equals(Segment3 other) => Start == other.Start && End == other.End;
+        /// <summary>True when <paramref name="obj"/> is an equal <see cref="Segment3"/>.</summary>
+        public override bool Equals(object? obj) => obj is Segment3 other && Equals(other);
+        /// <summary>A hash consistent with <see cref="Equals(Segment3)"/>.</summary>
+        public override int GetHashCode() => System.HashCode.Combine(Start, End);
+        /// <summary>Value equality, as <see cref="Equals(Segment3)"/>.</summary>
+        public static bool operator ==(Segment3 a, Segment3 b) => a.Equals(b);
+        /// <summary>Value inequality, as not <see cref="Equals(Segment3)"/>.</summary>
+        public static bool operator !=(Segment3 a, Segment3 b) => !a.Equals(b);
+        /// <summary>The shape as text in the invariant culture with round-trip numbers, e.g. <c>Segment3 { Start = …, … }</c>.</summary>
+        public override string ToString() => ToString(null, null);
+        /// <summary>The shape as text, each number in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null).</summary>
+        public string ToString(string? format, System.IFormatProvider? formatProvider) =>
+            $"Segment3 {{ Start = {Formatting.Of(Start, format, formatProvider)}, End = {Formatting.Of(End, format, formatProvider)} }}";
     }
 
     /// <summary>A closed 2D line segment from <see cref="Start"/> (parameter 0) to <see cref="End"/> (parameter 1); may have zero length.</summary>
-    public readonly struct Segment2 : IScalable<Segment2>
+    [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
+    public readonly struct Segment2 : System.IEquatable<Segment2>, System.IFormattable, IScalable<Segment2>
     {
         /// <summary>The endpoint at parameter 0.</summary>
         public readonly Vector2D Start;
@@ -62,5 +81,22 @@ namespace ProximityLib.Double
 
         /// <summary>The segment's length.</summary>
         public double Length => (End - Start).Length;
+
+        // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.
+        /// <summary>Value equality: every stored field equal under IEEE == (so −0 equals 0).</summary>
+        public bool Equals(Segment2 other) => Start == other.Start && End == other.End;
+        /// <summary>True when <paramref name="obj"/> is an equal <see cref="Segment2"/>.</summary>
+        public override bool Equals(object? obj) => obj is Segment2 other && Equals(other);
+        /// <summary>A hash consistent with <see cref="Equals(Segment2)"/>.</summary>
+        public override int GetHashCode() => System.HashCode.Combine(Start, End);
+        /// <summary>Value equality, as <see cref="Equals(Segment2)"/>.</summary>
+        public static bool operator ==(Segment2 a, Segment2 b) => a.Equals(b);
+        /// <summary>Value inequality, as not <see cref="Equals(Segment2)"/>.</summary>
+        public static bool operator !=(Segment2 a, Segment2 b) => !a.Equals(b);
+        /// <summary>The shape as text in the invariant culture with round-trip numbers, e.g. <c>Segment2 { Start = …, … }</c>.</summary>
+        public override string ToString() => ToString(null, null);
+        /// <summary>The shape as text, each number in <paramref name="format"/> ("R", round-trip, when null) and <paramref name="formatProvider"/> (invariant when null).</summary>
+        public string ToString(string? format, System.IFormatProvider? formatProvider) =>
+            $"Segment2 {{ Start = {Formatting.Of(Start, format, formatProvider)}, End = {Formatting.Of(End, format, formatProvider)} }}";
     }
 }
