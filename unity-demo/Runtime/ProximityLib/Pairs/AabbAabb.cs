@@ -1,5 +1,6 @@
 // Copied from src/ProximityLib/Pairs/AabbAabb.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
 #nullable enable
+using System.Runtime.CompilerServices;
 using System.Numerics;
 using Dbl = ProximityLib.Double;
 
@@ -8,24 +9,36 @@ namespace ProximityLib.Double
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between an AABB and an AABB (3D): negative when overlapping (least per-axis overlap); shared intervals put the witnesses at their middle. Algorithm: per-axis interval gaps (paper Eq. 18).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Aabb3 a, Aabb3 b) =>
-            a.Extreme | b.Extreme ? Wide.Between(a, b, static (x, y) => Core(x, y)) : Core(a, b);
+            a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
         /// <summary>Closest distance between an AABB and an AABB (2D): negative when overlapping (least per-axis overlap); shared intervals put the witnesses at their middle. Algorithm: per-axis interval gaps (paper Eq. 18).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Aabb2 a, Aabb2 b) =>
-            a.Extreme | b.Extreme ? Wide.Between(a, b, static (x, y) => Core(x, y)) : Core(a, b);
+            a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult3 Core(Aabb3 a, Aabb3 b) => Kernels.AabbAabb(a.Min, a.Max, b.Min, b.Max, false);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult2 Core(Aabb2 a, Aabb2 b) => Kernels.AabbAabb(a.Min.To3(), a.Max.To3(), b.Min.To3(), b.Max.To3(), true).To2();
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static DistanceResult3 Slow(Aabb3 a, Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y));
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static DistanceResult2 Slow(Aabb2 a, Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether an AABB and an AABB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Aabb3 a, Aabb3 b) => Core(a, b);
         /// <summary>Whether an AABB and an AABB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Aabb2 a, Aabb2 b) => Core(a, b);
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Aabb3 a, Aabb3 b) => Kernels.AabbAabbOverlaps(a.Min, a.Max, b.Min, b.Max);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Aabb2 a, Aabb2 b) => Kernels.AabbAabbOverlaps(a.Min.To3(), a.Max.To3(), b.Min.To3(), b.Max.To3());
     }
 }
@@ -35,16 +48,20 @@ namespace ProximityLib
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between an AABB and an AABB (3D), computed in double: negative when overlapping (least per-axis overlap); shared intervals put the witnesses at their middle.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Aabb3 a, Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
         /// <summary>Closest distance between an AABB and an AABB (2D), computed in double: negative when overlapping (least per-axis overlap); shared intervals put the witnesses at their middle.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Aabb2 a, Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether an AABB and an AABB (3D) touch or overlap.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Aabb3 a, Aabb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
         /// <summary>Whether an AABB and an AABB (2D) touch or overlap.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Aabb2 a, Aabb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
     }
 }

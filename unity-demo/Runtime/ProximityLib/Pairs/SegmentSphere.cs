@@ -1,5 +1,6 @@
 // Copied from src/ProximityLib/Pairs/SegmentSphere.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
 #nullable enable
+using System.Runtime.CompilerServices;
 using System.Numerics;
 using Dbl = ProximityLib.Double;
 
@@ -8,35 +9,55 @@ namespace ProximityLib.Double
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between a segment and a sphere (3D): negative when the segment enters the sphere (depth = radius − distance from center to segment). Algorithm: point–segment distance from the center, less the radius (paper Eq. 16).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Segment3 a, Sphere b) =>
-            a.Extreme | b.Extreme ? Wide.Between(a, b, static (x, y) => Core(x, y)) : Core(a, b);
+            a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
         /// <summary>Closest distance between a sphere and a segment (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Sphere a, Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and a circle (2D): negative when the segment enters the sphere (depth = radius − distance from center to segment). Algorithm: point–segment distance from the center, less the radius (paper Eq. 16).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Segment2 a, Circle b) =>
-            a.Extreme | b.Extreme ? Wide.Between(a, b, static (x, y) => Core(x, y)) : Core(a, b);
+            a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
         /// <summary>Closest distance between a circle and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Circle a, Segment2 b) => Between(b, a).Swapped();
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult3 Core(Segment3 a, Sphere b) => Kernels.PointSegment(b.Center, a.Start, a.End, out _).AsSphereFirst(b.Center, b.Radius).Swapped();
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult2 Core(Segment2 a, Circle b) => Kernels.PointSegment(b.Center.To3(), a.Start.To3(), a.End.To3(), out _).AsSphereFirst(b.Center.To3(), b.Radius).Swapped().To2();
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static DistanceResult3 Slow(Segment3 a, Sphere b) => Wide.Between(a, b, static (x, y) => Core(x, y));
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static DistanceResult2 Slow(Segment2 a, Circle b) => Wide.Between(a, b, static (x, y) => Core(x, y));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and a sphere (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Segment3 a, Sphere b) =>
-            a.Extreme | b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
+            a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
         /// <summary>Whether a sphere and a segment (3D) touch or overlap.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Sphere a, Segment3 b) => Overlaps(b, a);
         /// <summary>Whether a segment and a circle (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Segment2 a, Circle b) =>
-            a.Extreme | b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
+            a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
         /// <summary>Whether a circle and a segment (2D) touch or overlap.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Circle a, Segment2 b) => Overlaps(b, a);
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Segment3 a, Sphere b) => Kernels.PointSegmentResidual(b.Center, a.Start, a.End, out _).LengthSquared <= b.Radius * b.Radius;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Segment2 a, Circle b) => Kernels.PointSegmentResidual(b.Center.To3(), a.Start.To3(), a.End.To3(), out _).LengthSquared <= b.Radius * b.Radius;
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static bool Slow(Segment3 a, Sphere b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y));
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static bool Slow(Segment2 a, Circle b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y));
     }
 }
 
@@ -45,24 +66,32 @@ namespace ProximityLib
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between a segment and a sphere (3D), computed in double: negative when the segment enters the sphere (depth = radius − distance from center to segment).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Segment3 a, Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
         /// <summary>Closest distance between a sphere and a segment (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Sphere a, Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and a circle (2D), computed in double: negative when the segment enters the sphere (depth = radius − distance from center to segment).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Segment2 a, Circle b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
         /// <summary>Closest distance between a circle and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Circle a, Segment2 b) => Between(b, a).Swapped();
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and a sphere (3D) touch or overlap.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Segment3 a, Sphere b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
         /// <summary>Whether a sphere and a segment (3D) touch or overlap.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Sphere a, Segment3 b) => Overlaps(b, a);
         /// <summary>Whether a segment and a circle (2D) touch or overlap.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Segment2 a, Circle b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
         /// <summary>Whether a circle and a segment (2D) touch or overlap.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Circle a, Segment2 b) => Overlaps(b, a);
     }
 }

@@ -1,5 +1,6 @@
 // Copied from src/ProximityLib/Pairs/SphereSphere.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
 #nullable enable
+using System.Runtime.CompilerServices;
 using System.Numerics;
 using Dbl = ProximityLib.Double;
 
@@ -8,27 +9,43 @@ namespace ProximityLib.Double
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between a sphere and a sphere (3D): negative when overlapping (depth = ra + rb − |ca − cb|); coincident centers push the smaller sphere along +X (the larger along −X), whichever argument it is. Algorithm: |cb − ca| − (ra + rb) (paper Eq. 17); overlap compares squares (paper Eq. 24).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Sphere a, Sphere b) =>
-            a.Extreme | b.Extreme ? Wide.Between(a, b, static (x, y) => Core(x, y)) : Core(a, b);
+            a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
         /// <summary>Closest distance between a circle and a circle (2D): negative when overlapping (depth = ra + rb − |ca − cb|); coincident centers push the smaller sphere along +X (the larger along −X), whichever argument it is. Algorithm: |cb − ca| − (ra + rb) (paper Eq. 17); overlap compares squares (paper Eq. 24).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Circle a, Circle b) =>
-            a.Extreme | b.Extreme ? Wide.Between(a, b, static (x, y) => Core(x, y)) : Core(a, b);
+            a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult3 Core(Sphere a, Sphere b) => Kernels.SphereSphere(a.Center, a.Radius, b.Center, b.Radius);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult2 Core(Circle a, Circle b) => Kernels.SphereSphere(a.Center.To3(), a.Radius, b.Center.To3(), b.Radius).To2();
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static DistanceResult3 Slow(Sphere a, Sphere b) => Wide.Between(a, b, static (x, y) => Core(x, y));
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static DistanceResult2 Slow(Circle a, Circle b) => Wide.Between(a, b, static (x, y) => Core(x, y));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and a sphere (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Sphere a, Sphere b) =>
-            a.Extreme | b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
+            a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
         /// <summary>Whether a circle and a circle (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Circle a, Circle b) =>
-            a.Extreme | b.Extreme ? Wide.Overlaps(a, b, static (x, y) => Core(x, y)) : Core(a, b);
+            a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Sphere a, Sphere b) => (b.Center - a.Center).LengthSquared <= (a.Radius + b.Radius) * (a.Radius + b.Radius);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Circle a, Circle b) => (b.Center - a.Center).LengthSquared <= (a.Radius + b.Radius) * (a.Radius + b.Radius);
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static bool Slow(Sphere a, Sphere b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y));
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static bool Slow(Circle a, Circle b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y));
     }
 }
 
@@ -37,16 +54,20 @@ namespace ProximityLib
     public static partial class ClosestDistance
     {
         /// <summary>Closest distance between a sphere and a sphere (3D), computed in double: negative when overlapping (depth = ra + rb − |ca − cb|); coincident centers push the smaller sphere along +X (the larger along −X), whichever argument it is.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Sphere a, Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
         /// <summary>Closest distance between a circle and a circle (2D), computed in double: negative when overlapping (depth = ra + rb − |ca − cb|); coincident centers push the smaller sphere along +X (the larger along −X), whichever argument it is.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Circle a, Circle b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and a sphere (3D) touch or overlap.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Sphere a, Sphere b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
         /// <summary>Whether a circle and a circle (2D) touch or overlap.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Circle a, Circle b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
     }
 }
