@@ -24,7 +24,7 @@ namespace ProximityReference
         public static readonly string[] Names =
         {
             "random", "nearly-parallel", "parallel", "dot-perp", "tiny-segments", "far-along-line", "far-from-origin",
-            "range-limits", "near-contact", "box-boundaries", "stacked-obbs", "obb-inputs",
+            "range-limits", "near-contact", "box-boundaries", "stacked-obbs", "obb-inputs", "crossing-lines", "tiny-against-long",
         };
 
         public static IEnumerable<Case> Get(string name, int count, int seed)
