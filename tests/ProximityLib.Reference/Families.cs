@@ -24,7 +24,7 @@ namespace ProximityReference
         public static readonly string[] Names =
         {
             "random", "nearly-parallel", "parallel", "dot-perp", "tiny-segments", "far-along-line", "far-from-origin",
-            "range-limits", "near-contact", "box-boundaries", "stacked-obbs", "obb-inputs",
+            "range-limits", "near-contact", "box-boundaries", "stacked-obbs", "obb-inputs", "crossing-lines", "tiny-against-long",
         };
 
         public static IEnumerable<Case> Get(string name, int count, int seed)
@@ -44,6 +44,8 @@ namespace ProximityReference
                 "box-boundaries" => BoxBoundaries(rng, count),
                 "stacked-obbs" => StackedObbs(rng, count),
                 "obb-inputs" => ObbInputs(rng, count),
+                "crossing-lines" => CrossingLines(rng, count),
+                "tiny-against-long" => TinyAgainstLong(rng, count),
                 _ => throw new ArgumentException(name),
             };
         }
@@ -123,6 +125,87 @@ namespace ProximityReference
                         double c = Math.Cos(U(r, 0, 6.3)), s = Math.Sqrt(1 - c * c);
                         Vector2D R2(Vector3D v) => new Vector2D(c * v.X - s * v.Y, s * v.X + c * v.Y);
                         yield return new Case("nearly-parallel", new Segment2(R2(a0), R2(a1)), new Segment2(R2(b0), R2(b1)));
+                    }
+        }
+
+        /// <summary>
+        /// Two segments given in a local frame (z dropped for 2D), turned at random (in the plane for 2D), placed, and
+        /// scaled by 2^j (j in [−24, 24], inside the batch queries' range).
+        /// </summary>
+        private static Case Placed(Random r, string family, int dim, Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1)
+        {
+            double scale = Math.Pow(2, r.Next(-24, 25));
+            var t = V(r, 4) * (r.Next(4) == 0 ? 0 : 1);
+            if (dim == 3)
+            {
+                var m = Rotation(r);
+                Vector3D P(Vector3D v) => (Apply(m, v) + t) * scale;
+                return new Case(family, new Segment3(P(a0), P(a1)), new Segment3(P(b0), P(b1)));
+            }
+            double angle = U(r, 0, 2 * Math.PI), c = Math.Cos(angle), s = Math.Sin(angle);
+            Vector2D Q(Vector3D v) => new Vector2D(c * v.X - s * v.Y + t.X, s * v.X + c * v.Y + t.Y) * scale;
+            return new Case(family, new Segment2(Q(a0), Q(a1)), new Segment2(Q(b0), Q(b1)));
+        }
+
+        /// <summary>
+        /// Segments whose lines cross (2D), or pass at a gap g = 0 or 10^-U(0,7) of a's length (3D), at random points
+        /// inside or just outside both, at angles 10^-(k+U(0,1)) for k = 0..6 and 0 (collinear up to rounding): the
+        /// lines' stationary point is the answer and ill-conditioned. Random lengths, turns, positions and 2^j scales.
+        /// </summary>
+        private static IEnumerable<Case> CrossingLines(Random r, int count)
+        {
+            foreach (int k in new[] { 0, 1, 2, 3, 4, 5, 6, -1 })
+                for (int n = 0; n < count; n++)
+                    foreach (int dim in new[] { 3, 2 })
+                    {
+                        double angle = k < 0 ? 0 : Math.Pow(10, -k - r.NextDouble());
+                        double la = U(r, 0.25, 2), lb = U(r, 0.25, 2), ua = U(r, -0.2, 1.2), ub = U(r, -0.2, 1.2);
+                        double gap = dim == 2 || n % 3 == 0 ? 0 : la * Math.Pow(10, -U(r, 0, 7)) * (r.Next(2) == 0 ? 1 : -1);
+                        var ea = new Vector3D(1, 0, 0);
+                        var eb = new Vector3D(Math.Cos(angle), Math.Sin(angle), 0);
+                        var up = new Vector3D(0, 0, gap);
+                        var b0 = up - eb * (ub * lb);
+                        var b1 = up + eb * ((1 - ub) * lb);
+                        if (r.Next(2) == 0) (b0, b1) = (b1, b0);
+                        yield return Placed(r, "crossing-lines", dim, ea * (-ua * la), ea * ((1 - ua) * la), b0, b1);
+                    }
+        }
+
+        /// <summary>
+        /// A segment 2^-k (k = 1, 4, …, 28) as long as the other, near a random point of it (gap 0 or 2^-U(0,30) of the
+        /// length) in a random direction or nearly parallel (10^-U(1,7)); and, in 3D, two segments that short whose
+        /// lines cross in projection at random inside points, stacked a unit apart along the common normal.
+        /// </summary>
+        private static IEnumerable<Case> TinyAgainstLong(Random r, int count)
+        {
+            for (int k = 1; k <= 28; k += 3)
+                for (int n = 0; n < count; n++)
+                    foreach (int dim in new[] { 3, 2 })
+                    {
+                        double lb = U(r, 0.5, 2), la = lb * Math.Pow(2, -k) * U(r, 1, 2);
+                        double angle = n % 2 == 0 ? U(r, 0, 2 * Math.PI) : Math.Pow(10, -U(r, 1, 7));
+                        var ea = new Vector3D(Math.Cos(angle), Math.Sin(angle), 0);
+                        var side = new Vector3D(0, 1, 0);
+                        if (dim == 3 && n % 2 == 0)
+                        {
+                            ea = V(r, 1);
+                            ea /= ea.Length;
+                            side = V(r, 1);
+                            side /= side.Length;
+                        }
+                        double gap = n % 3 == 0 ? 0 : lb * Math.Pow(2, -U(r, 0, 30));
+                        var c = new Vector3D(U(r, -0.1, 1.1) * lb, 0, 0) + side * gap;
+                        double ua = U(r, -0.5, 1.5);
+                        var a0 = c - ea * (ua * la);
+                        var a1 = c + ea * ((1 - ua) * la);
+                        var placed = Placed(r, "tiny-against-long", dim, a0, a1, new Vector3D(0, 0, 0), new Vector3D(lb, 0, 0));
+                        yield return r.Next(2) == 0 ? placed : new Case(placed.Family, placed.B, placed.A);
+                        if (dim == 2) continue;
+                        // Both short: crossing in projection, a unit apart along z.
+                        var eb = new Vector3D(Math.Cos(angle + 1), Math.Sin(angle + 1), 0);
+                        double lc = la * U(r, 0.5, 2), uc = U(r, 0, 1);
+                        yield return Placed(r, "tiny-against-long", 3, ea * (-ua * la), ea * ((1 - ua) * la),
+                            new Vector3D(0, 0, 1) - eb * (uc * lc), new Vector3D(0, 0, 1) + eb * ((1 - uc) * lc));
                     }
         }
 

@@ -68,9 +68,14 @@ namespace ProximityReference
                 case (ProximityLib.Sphere x, ProximityLib.Aabb3 y): BatchQuery.Distances(new SphereSet(new[] { x }), new AabbSet(new[] { y }), d); return d[0];
                 case (ProximityLib.Sphere x, ProximityLib.Obb3 y): BatchQuery.Distances(new SphereSet(new[] { x }), new ObbSet(new[] { y }), d); return d[0];
                 case (ProximityLib.Segment3 x, ProximityLib.Segment3 y): BatchQuery.Distances(new SegmentSet(new[] { x }), new SegmentSet(new[] { y }), d); return d[0];
+                case (ProximityLib.Segment2 x, ProximityLib.Segment2 y): BatchQuery.Distances(new SegmentSet(new[] { Flat(x) }), new SegmentSet(new[] { Flat(y) }), d); return d[0];
                 default: return null;
             }
         }
+
+        /// <summary>A 2D segment as the batch API takes it: a 3D segment in the z = 0 plane.</summary>
+        public static ProximityLib.Segment3 Flat(ProximityLib.Segment2 s) =>
+            new ProximityLib.Segment3(new System.Numerics.Vector3(s.Start, 0), new System.Numerics.Vector3(s.End, 0));
 
         public static Measurement Run(Case c)
         {
@@ -101,8 +106,8 @@ namespace ProximityReference
                     floatMeasured = true;
                     ef = Exact.Error(df, fexact, UFloat, fscale);
                     bool fo = ProximityLib.ProximityQuery.Overlaps((dynamic)fa, (dynamic)fb);
-                    // The batch runs in float lanes: inside its documented safe range only (squares, and for segments
-                    // fourth powers, of the configuration's size must stay normal floats).
+                    // The batch runs in float lanes: inside its documented safe range only (squares of the configuration's
+                    // size must stay normal floats).
                     float? db = fscale >= BatchMinScale && fscale <= BatchMaxScale ? Batch(fa, fb) ?? Batch(fb, fa) : null;
                     if (db.HasValue) eb = Exact.Error(db.Value, fexact, UFloat, fscale);
                     wrongF = Math.Abs(fexact.ToDouble()) > Band * UFloat * fscale && fo != (fexact.Sign <= 0);

@@ -11,7 +11,8 @@ namespace ProximityLib.Batch
     /// with no allocation. Results are the scalar queries' signed distances (gap apart, 0 touching, −depth overlapping)
     /// or touch-or-overlap verdicts, computed in float across <see cref="Vector{T}"/> lanes; witness points are the scalar
     /// API's job. The lanes compute in float: the error bound (E ≤ 8, measured in docs/accuracy.md) holds for
-    /// configurations whose size lies within 2^±28, where squares and (segment–segment) fourth powers stay normal floats.
+    /// configurations whose size lies within 2^±28, where squares stay normal floats (segment–segment scales its fourth
+    /// powers down to squares).
     /// </summary>
     public static class BatchQuery
     {
@@ -181,8 +182,13 @@ namespace ProximityLib.Batch
 
         /// <summary>
         /// Segment–segment without branches: the best of five candidate pairs, every one a pair of real points, so a
-        /// noisy candidate (nearly parallel segments) can only lose: the clamped stationary point of the lines (from the
-        /// Lagrange-identity determinant |d0 × d1|²) and each endpoint against the other segment.
+        /// noisy candidate can only lose: a point of a against segment b, where the point is the clamped stationary
+        /// point of the lines (from the Lagrange-identity determinant |d0 × d1|²), and each endpoint against the other
+        /// segment. That point's partner is its closest point on b, not the lines' own stationary t: for nearly parallel
+        /// segments both stationary parameters are off by up to ~u·S/sin²θ along the lines, and two independent errors
+        /// leave the pair about that far apart (E in the thousands), while a point of a off by δ along the lines, with
+        /// its partner following, misses the distance by at most δ·sin θ, and by far less when the lines do not meet;
+        /// where even that is too much, an endpoint candidate is closer.
         /// </summary>
         private readonly struct SegmentSegment<TA> : IKernel where TA : struct, ISegments
         {
@@ -198,25 +204,51 @@ namespace ProximityLib.Batch
                 var d0 = new V3(_a.BX(i) - a0.X, _a.BY(i) - a0.Y, _a.BZ(i) - a0.Z);
                 var d1 = new V3(new Vector<float>(_b.BX, i) - b0.X, new Vector<float>(_b.BY, i) - b0.Y, new Vector<float>(_b.BZ, i) - b0.Z);
                 var w = new V3(b0.X - a0.X, b0.Y - a0.Y, b0.Z - a0.Z);
-                var zero = Vector<float>.Zero;
-                var one = Vector<float>.One;
-
-                var n = Cross(d0, d1);
-                var nn = V3.Dot(n, n);
-                var valid = Vector.GreaterThan(nn, zero);
-                var s = Vector.ConditionalSelect(valid, Runner.Clamp(V3.Dot(Cross(w, d1), n) / nn, zero, one), zero);
-                var t = Vector.ConditionalSelect(valid, Runner.Clamp(V3.Dot(Cross(w, d0), n) / nn, zero, one), zero);
-                var best = Residual2(d0.X * s - d1.X * t - w.X, d0.Y * s - d1.Y * t - w.Y, d0.Z * s - d1.Z * t - w.Z);
-
                 var dd0 = V3.Dot(d0, d0);
                 var dd1 = V3.Dot(d1, d1);
-                // a0 against segment b (offset a0 − b0 = −w), a1 against b (d0 − w), b0 against a (w), b1 against a (w + d1).
-                best = Vector.Min(best, PointSegment2(Runner.Negate(w.X), Runner.Negate(w.Y), Runner.Negate(w.Z), d1, dd1));
-                best = Vector.Min(best, PointSegment2(d0.X - w.X, d0.Y - w.Y, d0.Z - w.Z, d1, dd1));
-                best = Vector.Min(best, PointSegment2(w.X, w.Y, w.Z, d0, dd0));
-                best = Vector.Min(best, PointSegment2(w.X + d1.X, w.Y + d1.Y, w.Z + d1.Z, d0, dd0));
+
+                // s = ((w × d1)·n)/|n|² with n = d0 × d1: the quotient of two fourth powers of the lengths, subnormal
+                // (imprecise) for short segments inside the safe range. Dividing both by about the larger squared length
+                // (g, a power of two: exact) leaves squares. Where |n|²·g still underflows, the shorter segment times
+                // sin θ is below 2^−63, and the endpoint candidates are that close to the answer.
+                var n = Cross(d0, d1);
+                var g = PowerOfTwoInverse(Vector.Max(dd0, dd1));
+                var ng = new V3(n.X * g, n.Y * g, n.Z * g);
+                var nng = V3.Dot(n, ng);
+                var s = Vector.ConditionalSelect(Vector.GreaterThan(nng, Vector<float>.Zero),
+                    Runner.Clamp(V3.Dot(Cross(w, d1), ng) / nng, Vector<float>.Zero, Vector<float>.One), Vector<float>.Zero);
+
+                // a(s) against segment b (offset a0 + s·d0 − b0 = s·d0 − w), a0 against b (−w), a1 against b (d0 − w),
+                // b0 against a (w), b1 against a (w + d1).
+                var inv0 = Reciprocal(dd0);
+                var inv1 = Reciprocal(dd1);
+                var best = PointSegment2(d0.X * s - w.X, d0.Y * s - w.Y, d0.Z * s - w.Z, d1, inv1);
+                best = Vector.Min(best, PointSegment2(Runner.Negate(w.X), Runner.Negate(w.Y), Runner.Negate(w.Z), d1, inv1));
+                best = Vector.Min(best, PointSegment2(d0.X - w.X, d0.Y - w.Y, d0.Z - w.Z, d1, inv1));
+                best = Vector.Min(best, PointSegment2(w.X, w.Y, w.Z, d0, inv0));
+                best = Vector.Min(best, PointSegment2(w.X + d1.X, w.Y + d1.Y, w.Z + d1.Z, d0, inv0));
                 return Vector.SquareRoot(best);
             }
+
+            /// <summary>
+            /// 1/dd for a squared length dd, or 0 below 2^−126, where 1/dd could overflow: such a segment is shorter than
+            /// 2^−63, and as a point at its start it is off by far less than u·S in the safe range.
+            /// </summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static Vector<float> Reciprocal(Vector<float> dd) =>
+                Vector.ConditionalSelect(Vector.GreaterThanOrEqual(dd, new Vector<float>(MinNormal)), Vector<float>.One / dd, Vector<float>.Zero);
+
+            /// <summary>The smallest normal float, 2^−126.</summary>
+            private const float MinNormal = 1.17549435E-38f;
+
+            /// <summary>
+            /// 2^−e for x in [2^e, 2^(e+1)), from the exponent bits alone (exact, no division). x below 2^−126 (zero or
+            /// subnormal) gives 2^127; x from 2^127 up (outside any safe range) gives 0 or a non-finite factor, whose lane
+            /// the determinant test then rejects.
+            /// </summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static Vector<float> PowerOfTwoInverse(Vector<float> x) =>
+                Vector.AsVectorSingle(new Vector<int>(0x7F000000) - (Vector.AsVectorInt32(x) & new Vector<int>(0x7F800000)));
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             private static V3 Cross(in V3 a, in V3 b) => new V3(a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X);
@@ -224,12 +256,14 @@ namespace ProximityLib.Batch
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             private static Vector<float> Residual2(Vector<float> x, Vector<float> y, Vector<float> z) => x * x + y * y + z * z;
 
-            /// <summary>Squared distance from a point at offset (px, py, pz) from a segment's start to the segment d.</summary>
+            /// <summary>
+            /// Squared distance from a point at offset (px, py, pz) from a segment's start to the segment d, given
+            /// <see cref="Reciprocal"/> of its squared length (one division per segment, not per candidate).
+            /// </summary>
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            private static Vector<float> PointSegment2(Vector<float> px, Vector<float> py, Vector<float> pz, in V3 d, Vector<float> dd)
+            private static Vector<float> PointSegment2(Vector<float> px, Vector<float> py, Vector<float> pz, in V3 d, Vector<float> inv)
             {
-                var t = Vector.ConditionalSelect(Vector.GreaterThan(dd, Vector<float>.Zero),
-                    Runner.Clamp((px * d.X + py * d.Y + pz * d.Z) / dd, Vector<float>.Zero, Vector<float>.One), Vector<float>.Zero);
+                var t = Runner.Clamp((px * d.X + py * d.Y + pz * d.Z) * inv, Vector<float>.Zero, Vector<float>.One);
                 return Residual2(px - d.X * t, py - d.Y * t, pz - d.Z * t);
             }
         }
