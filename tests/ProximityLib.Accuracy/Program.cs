@@ -6,10 +6,10 @@ using System.Linq;
 using System.Text;
 using ProximityReference;
 
-// Usage: dotnet run --project tests/ProximityLib.Accuracy -c Release -- [--cases N] [--seed S] [--out FILE]
+// Usage: dotnet run --project tests/ProximityLib.Accuracy -c Release -- [--cases N] [--seed S] [--family NAME] [--out FILE]
 CultureInfo.CurrentCulture = CultureInfo.InvariantCulture;
 int cases = 20, seed = 2026;
-string? output = null;
+string? output = null, only = null;
 for (int i = 0; i < args.Length; i++)
 {
     switch (args[i])
@@ -17,8 +17,9 @@ for (int i = 0; i < args.Length; i++)
         case "--cases": cases = int.Parse(args[++i]); break;
         case "--seed": seed = int.Parse(args[++i]); break;
         case "--out": output = args[++i]; break;
+        case "--family": only = args[++i]; break;
         case "--help":
-            Console.WriteLine("accuracy [--cases N (per family parameter, default 20)] [--seed S] [--out docs/accuracy.md]");
+            Console.WriteLine("accuracy [--cases N (per family parameter, default 20)] [--seed S] [--family NAME (one family only)] [--out docs/accuracy.md]");
             return 0;
         default:
             Console.Error.WriteLine($"unknown option '{args[i]}' (try --help)");
@@ -27,7 +28,7 @@ for (int i = 0; i < args.Length; i++)
 }
 
 var all = new List<Measurement>();
-foreach (var family in Families.Names)
+foreach (var family in Families.Names.Where(f => only == null || f == only))
 {
     var started = DateTime.UtcNow;
     var ms = Families.Get(family, cases, seed).Select(Measure.Run).ToList();
