@@ -5,10 +5,9 @@ namespace ProximityLib.Double
 {
     /// <summary>
     /// A canonical order between two shapes of one type, so that a query gives the same answer, bit for bit, in either
-    /// argument order: kernels whose steps are not symmetric run on the ordered pair and swap the result back; the
-    /// symmetric ones use it only to break an exact tie. The order compares the stored doubles' bit patterns field
-    /// by field: a total order that tells apart even values == calls equal (0 and −0), and the first field almost
-    /// always decides.
+    /// argument order: kernels whose steps are not symmetric (box – box) run on the ordered pair and swap the result
+    /// back; the symmetric ones use it only to break an exact tie. The order compares the first stored double, then
+    /// (rarely) every field's bit pattern: a total order that tells apart even values == calls equal (0 and −0).
     /// </summary>
     internal static class Order
     {
@@ -31,41 +30,27 @@ namespace ProximityLib.Double
             return c != 0 ? c : Compare(a.Y, b.Y);
         }
 
+        /// <summary>
+        /// Whether segment (b0, b1) comes strictly before segment (a0, a1): the tie-break of the segment kernel. By
+        /// value and out of line (ties are rare): a reference to a hot local passed to a call would pin it in memory.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static bool Swap(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1)
+        {
+            int c = Compare(a0, b0);
+            return (c != 0 ? c : Compare(a1, b1)) > 0;
+        }
+
         /// <summary>Whether the pair must be swapped into canonical order: b strictly before a.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Swap(in Segment3 a, in Segment3 b)
+        public static bool Swap(Obb3 a, Obb3 b)
         {
-            int c = Compare(a.Start.X, b.Start.X);
-            return c != 0 ? c > 0 : Tail(a, b) > 0;
+            double x = a.Center.X, y = b.Center.X;
+            return x != y ? x > y : Tail(a, b) > 0;
         }
 
-        private static int Tail(in Segment3 a, in Segment3 b)
-        {
-            int c = Compare(a.Start, b.Start);
-            return c != 0 ? c : Compare(a.End, b.End);
-        }
-
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Swap(in Segment2 a, in Segment2 b)
-        {
-            int c = Compare(a.Start.X, b.Start.X);
-            return c != 0 ? c > 0 : Tail(a, b) > 0;
-        }
-
-        private static int Tail(in Segment2 a, in Segment2 b)
-        {
-            int c = Compare(a.Start, b.Start);
-            return c != 0 ? c : Compare(a.End, b.End);
-        }
-
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Swap(in Obb3 a, in Obb3 b)
-        {
-            int c = Compare(a.Center.X, b.Center.X);
-            return c != 0 ? c > 0 : Tail(a, b) > 0;
-        }
-
-        private static int Tail(in Obb3 a, in Obb3 b)
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static int Tail(Obb3 a, Obb3 b)
         {
             int c = Compare(a.Center, b.Center);
             if (c == 0) c = Compare(a.HalfExtents, b.HalfExtents);
@@ -75,14 +60,16 @@ namespace ProximityLib.Double
             return c;
         }
 
+        /// <summary>Whether the pair must be swapped into canonical order: b strictly before a.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Swap(in Obb2 a, in Obb2 b)
+        public static bool Swap(Obb2 a, Obb2 b)
         {
-            int c = Compare(a.Center.X, b.Center.X);
-            return c != 0 ? c > 0 : Tail(a, b) > 0;
+            double x = a.Center.X, y = b.Center.X;
+            return x != y ? x > y : Tail(a, b) > 0;
         }
 
-        private static int Tail(in Obb2 a, in Obb2 b)
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static int Tail(Obb2 a, Obb2 b)
         {
             int c = Compare(a.Center, b.Center);
             if (c == 0) c = Compare(a.HalfExtents, b.HalfExtents);

@@ -26,12 +26,21 @@ namespace ProximityTests.Pairs
             Assert.That((r.ParameterA, r.ParameterB), Is.EqualTo((1.0, 0.0)));
         }
 
+        /// <summary>
+        /// Parallel overlap has a line of closest pairs; the documented pick is the first minimum among the endpoint
+        /// pairs taken as mirror images (starts: A.Start on B / B.Start on A, then ends), the smaller of each pair:
+        /// here B.Start on A (A.Start on B is √2 away, and the ends only tie), in either argument order.
+        /// </summary>
         [Test]
-        public void ParallelOverlapReturnsTheFirstEndpointCandidate()
+        public void ParallelOverlapReturnsTheFirstEndpointPairMinimum()
         {
-            var r = ClosestDistance.Between(new Segment3(V(0, 0, 0), V(2, 0, 0)), new Segment3(V(1, 1, 0), V(3, 1, 0)));
-            Result(r, 1, V(2, 0, 0), V(2, 1, 0));
-            Assert.That((r.ParameterA, r.ParameterB), Is.EqualTo((1.0, 0.5)));
+            var a = new Segment3(V(0, 0, 0), V(2, 0, 0));
+            var b = new Segment3(V(1, 1, 0), V(3, 1, 0));
+            var r = ClosestDistance.Between(a, b);
+            Result(r, 1, V(1, 0, 0), V(1, 1, 0));
+            Assert.That((r.ParameterA, r.ParameterB), Is.EqualTo((0.5, 0.0)));
+            var q = ClosestDistance.Between(b, a);
+            Result(q, 1, V(1, 1, 0), V(1, 0, 0));
         }
 
         [Test]

@@ -8,33 +8,24 @@ namespace ProximityLib.Double
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a segment and a segment (3D): never negative; for parallel overlapping segments one of the closest pairs (the first found at an endpoint). Algorithm: interior stationary point with the Lagrange-identity determinant, else the four endpoint–segment candidates (Eberly, robust segment distance; replaces paper Eq. 13–15).</summary>
+        /// <summary>Closest distance between a segment and a segment (3D): never negative; for parallel overlapping segments one of the closest pairs (the first minimum among the endpoint pairs, docs/api.md), the same in either argument order. Algorithm: interior stationary point with the Lagrange-identity determinant, else the four endpoint–segment candidates (Eberly, robust segment distance; replaces paper Eq. 13–15).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Segment3 a, Segment3 b) =>
             a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
-        /// <summary>Closest distance between a segment and a segment (2D): never negative; for parallel overlapping segments one of the closest pairs (the first found at an endpoint). Algorithm: interior stationary point with the Lagrange-identity determinant, else the four endpoint–segment candidates (Eberly, robust segment distance; replaces paper Eq. 13–15).</summary>
+        /// <summary>Closest distance between a segment and a segment (2D): never negative; for parallel overlapping segments one of the closest pairs (the first minimum among the endpoint pairs, docs/api.md), the same in either argument order. Algorithm: interior stationary point with the Lagrange-identity determinant, else the four endpoint–segment candidates (Eberly, robust segment distance; replaces paper Eq. 13–15).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Segment2 a, Segment2 b) =>
             a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
 
-        // The kernel's steps are not symmetric: it runs on the pair in canonical order (one call site, so it inlines once).
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult3 Core(Segment3 a, Segment3 b)
         {
-            bool swap = Order.Swap(a, b);
-            var p = swap ? b : a;
-            var q = swap ? a : b;
-            var r = Kernels.SegmentSegment(p.Start, p.End, q.Start, q.End);
-            return swap ? r.Swapped() : r;
+            return Kernels.SegmentSegment(a.Start, a.End, b.Start, b.End);
         }
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult2 Core(Segment2 a, Segment2 b)
         {
-            bool swap = Order.Swap(a, b);
-            var p = swap ? b : a;
-            var q = swap ? a : b;
-            var r = Kernels.SegmentSegment(p.Start.To3(), p.End.To3(), q.Start.To3(), q.End.To3()).To2();
-            return swap ? r.Swapped() : r;
+            return Kernels.SegmentSegment(a.Start.To3(), a.End.To3(), b.Start.To3(), b.End.To3()).To2();
         }
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static DistanceResult3 Slow(Segment3 a, Segment3 b) => Wide.Between(a, b, static (x, y) => Core(x, y));
@@ -56,18 +47,12 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Segment3 a, Segment3 b)
         {
-            bool swap = Order.Swap(a, b);
-            var p = swap ? b : a;
-            var q = swap ? a : b;
-            return Kernels.SegmentSegmentCore(p.Start, p.End, q.Start, q.End, out _, out _) == 0;
+            return Kernels.SegmentSegmentCore(a.Start, a.End, b.Start, b.End, out _, out _) == 0;
         }
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Segment2 a, Segment2 b)
         {
-            bool swap = Order.Swap(a, b);
-            var p = swap ? b : a;
-            var q = swap ? a : b;
-            return Kernels.SegmentSegmentCore(p.Start.To3(), p.End.To3(), q.Start.To3(), q.End.To3(), out _, out _) == 0;
+            return Kernels.SegmentSegmentCore(a.Start.To3(), a.End.To3(), b.Start.To3(), b.End.To3(), out _, out _) == 0;
         }
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static bool Slow(Segment3 a, Segment3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y));
@@ -80,10 +65,10 @@ namespace ProximityLib
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a segment and a segment (3D), computed in double: never negative; for parallel overlapping segments one of the closest pairs (the first found at an endpoint).</summary>
+        /// <summary>Closest distance between a segment and a segment (3D), computed in double: never negative; for parallel overlapping segments one of the closest pairs (the first minimum among the endpoint pairs, docs/api.md), the same in either argument order.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Segment3 a, Segment3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
-        /// <summary>Closest distance between a segment and a segment (2D), computed in double: never negative; for parallel overlapping segments one of the closest pairs (the first found at an endpoint).</summary>
+        /// <summary>Closest distance between a segment and a segment (2D), computed in double: never negative; for parallel overlapping segments one of the closest pairs (the first minimum among the endpoint pairs, docs/api.md), the same in either argument order.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Segment2 a, Segment2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
     }

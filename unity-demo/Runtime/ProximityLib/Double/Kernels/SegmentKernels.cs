@@ -12,11 +12,17 @@ namespace ProximityLib.Double
         /// The objective is a convex quadratic on the unit square. The lines' closest parameters come from the Lagrange
         /// identity |d0|²|d1|² − (d0·d1)² = |d0 × d1|² with cross-product numerators (the usual determinant cancels to
         /// noise for nearly parallel segments), on a copy scaled by a power of two because |d0 × d1|² is a fourth power
-        /// of the size. Well conditioned: inside is the answer, outside is clamped s, best t for it, and best s for a
-        /// clamped t (Ericson, Real-Time Collision Detection §5.1.9). Nearly parallel or parallel: the best of a refined
-        /// interior pair and the four endpoint–segment pairs (the case split of Eberly's robust method), each measured
-        /// as the distance of the two points it returns.
+        /// of the size. Well conditioned: inside is the answer; outside, the parameter further outside is clamped
+        /// first, then the best other parameter for it, then the best first one for a clamped other (Ericson,
+        /// Real-Time Collision Detection §5.1.9). Nearly parallel or parallel: the best of a refined interior pair and
+        /// the four endpoint–segment pairs (the case split of Eberly's robust method), each measured as the distance
+        /// of the two points it returns.
+        /// Symmetric by construction: swapping the segments swaps d0 and d1, negates w, n, c and f exactly and swaps
+        /// (si, ti), and every step below either is symmetric or has a mirror image that the swapped call takes
+        /// instead, so the swapped answer is this one with s and t exchanged, bit for bit. Only exact ties fall back to
+        /// the canonical order (<see cref="Order"/>).
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)] // inlined twice or into a large caller, it exhausts the inlining budget
         public static double SegmentSegmentCore(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, out double s, out double t)
         {
             var d0 = a1 - a0;
@@ -45,23 +51,36 @@ namespace ProximityLib.Double
             // Well conditioned (sin²θ ≥ 1e-4; the product is formed first so the test is the same in either order).
             if (nn >= 1e-4 * (d0k.LengthSquared * d1k.LengthSquared))
             {
-                s = si; t = ti;
                 if (si >= 0 && si <= 1 && ti >= 0 && ti <= 1)
                 {
                     // The gap between the lines, (w·n)²/|n|², carries no error from (s, t); crossing 2D segments give
                     // exactly 0.
+                    s = si; t = ti;
                     double wn = Vector3D.Dot(wk, n);
                     return wn * wn / nn / k / k;
                 }
-                s = Num.Clamp(si, 0, 1);
-                double tNum = b * s + f;
-                if (tNum < 0) { t = 0; s = Num.Clamp(-c / a, 0, 1); }
-                else if (tNum > e) { t = 1; s = Num.Clamp((b - c) / a, 0, 1); }
-                else t = tNum / e;
+                double outS = Math.Max(-si, si - 1), outT = Math.Max(-ti, ti - 1);
+                if (outS > outT || (outS == outT && !Order.Swap(a0, a1, b0, b1))) ClampFirst(a, e, b, c, f, si, out s, out t);
+                else ClampFirst(e, a, b, -f, -c, ti, out t, out s); // the mirror image: t first
                 return Residual(d0, d1, w, s, t);
             }
 
-            return NearlyParallel(a0, a1, b0, b1, nn > 0, si, out s, out t);
+            return NearlyParallel(a0, a1, b0, b1, d0, d1, w, nn > 0, si, ti, out s, out t);
+        }
+
+        /// <summary>
+        /// Ericson's clamping for a minimum outside the unit square, first parameter first: clamp it, take the best
+        /// second parameter for it, and if that is clamped, the best first parameter again. (a, e, b, c, f) are
+        /// |d0|², |d1|², d0·d1, −d0·w, −d1·w; the mirror call passes (e, a, b, −f, −c).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void ClampFirst(double a, double e, double b, double c, double f, double s0, out double s, out double t)
+        {
+            s = Num.Clamp(s0, 0, 1);
+            double tNum = b * s + f;
+            if (tNum < 0) { t = 0; s = Num.Clamp(-c / a, 0, 1); }
+            else if (tNum > e) { t = 1; s = Num.Clamp((b - c) / a, 0, 1); }
+            else t = tNum / e;
         }
 
         /// <summary>
@@ -69,32 +88,60 @@ namespace ProximityLib.Double
         /// moves the pair by u·|d|), and the gap between the lines depends on a normal whose direction is noisy. So
         /// every candidate is a pair of real points measured by its own residual: the interior one refined by
         /// projecting the point of A at the clamped s onto B and that point back onto A (each projection is well
-        /// conditioned, and the refined pair is within rounding of the minimum when it lies inside), and the four
-        /// endpoint–segment pairs, which cover every minimum on the boundary of the parameter square. A noisy
-        /// candidate can only lose. Kept out of line so the common path stays small enough to inline.
+        /// conditioned, and the refined pair is within rounding of the minimum when it lies inside) and its mirror
+        /// image from B, and the four endpoint–segment pairs, which cover every minimum on the boundary of the
+        /// parameter square. A noisy candidate can only lose. Each candidate is formed in the frame of the segment it
+        /// starts from (origin a0 or b0, from the differences d0, d1, w), so no intermediate point is rounded at the
+        /// scale of the position and the mirror image is the swapped call's own candidate, bit for bit. Candidates are
+        /// compared in mirror-image pairs, ties going to the canonically first segment's side. Kept out of line: rare,
+        /// and the common path stays small.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static double NearlyParallel(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, bool hasInterior, double si, out double s, out double t)
+        private static double NearlyParallel(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, Vector3D d0, Vector3D d1, Vector3D w,
+            bool hasInterior, double si, double ti, out double s, out double t)
         {
             double best = double.PositiveInfinity;
             s = 0; t = 0;
-            double r2, tc, sc;
+            var zero = default(Vector3D);
+            var v = -w; // B's frame: A = v + [0, 1]·d0
+            double tc, sc, r2A, r2B;
             if (hasInterior)
             {
-                PointSegmentResidual(SegmentPoint(a0, a1, Num.Clamp(si, 0, 1)), b0, b1, out tc);
-                best = PointSegmentResidual(SegmentPoint(b0, b1, tc), a0, a1, out sc).LengthSquared;
-                s = sc; t = tc;
+                Residual(SegmentPoint(zero, d0, Num.Clamp(si, 0, 1)), w, d1, out double ta);
+                r2A = Residual(w + SegmentPoint(zero, d1, ta), zero, d0, out double sa).LengthSquared;
+                Residual(SegmentPoint(zero, d1, Num.Clamp(ti, 0, 1)), v, d0, out double sb);
+                r2B = Residual(v + SegmentPoint(zero, d0, sb), zero, d1, out double tb).LengthSquared;
+                if (Pick(r2A, r2B, a0, a1, b0, b1)) { best = r2A; s = sa; t = ta; }
+                else { best = r2B; s = sb; t = tb; }
             }
-            r2 = PointSegmentResidual(a0, b0, b1, out tc).LengthSquared;
-            if (r2 < best) { best = r2; s = 0; t = tc; }
-            r2 = PointSegmentResidual(a1, b0, b1, out tc).LengthSquared;
-            if (r2 < best) { best = r2; s = 1; t = tc; }
-            r2 = PointSegmentResidual(b0, a0, a1, out sc).LengthSquared;
-            if (r2 < best) { best = r2; s = sc; t = 0; }
-            r2 = PointSegmentResidual(b1, a0, a1, out sc).LengthSquared;
-            if (r2 < best) { best = r2; s = sc; t = 1; }
+            r2A = Residual(zero, w, d1, out tc).LengthSquared;
+            r2B = Residual(zero, v, d0, out sc).LengthSquared;
+            if (Pick(r2A, r2B, a0, a1, b0, b1)) { if (r2A < best) { best = r2A; s = 0; t = tc; } }
+            else if (r2B < best) { best = r2B; s = sc; t = 0; }
+            r2A = Residual(d0, w, d1, out tc).LengthSquared;
+            r2B = Residual(d1, v, d0, out sc).LengthSquared;
+            if (Pick(r2A, r2B, a0, a1, b0, b1)) { if (r2A < best) { best = r2A; s = 1; t = tc; } }
+            else if (r2B < best) { best = r2B; s = sc; t = 1; }
             return best;
         }
+
+        /// <summary>
+        /// Residual p − q from the closest point q = a + t·d of the segment a + [0, 1]·d to p, formed from the nearer
+        /// endpoint (as <see cref="PointSegmentResidual"/>, with the direction given, not recomputed from two points).
+        /// </summary>
+        private static Vector3D Residual(Vector3D p, Vector3D a, Vector3D d, out double t)
+        {
+            var wp = p - a;
+            double dd = d.LengthSquared, wd = Vector3D.Dot(wp, d);
+            if (wd <= 0 || dd == 0) { t = 0; return wp; }
+            if (wd >= dd) { t = 1; return wp - d; }
+            t = wd / dd;
+            return t <= 0.5 ? wp - d * t : (wp - d) + d * (1 - t);
+        }
+
+        /// <summary>Whether A's candidate beats its mirror image from B: the smaller residual, ties to the canonically first segment.</summary>
+        private static bool Pick(double r2A, double r2B, Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1) =>
+            r2A < r2B || (r2A == r2B && !Order.Swap(a0, a1, b0, b1));
 
         /// <summary>|a0 + s·d0 − b0 − t·d1|², formed from the differences so no endpoint's position enters.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -103,6 +150,7 @@ namespace ProximityLib.Double
         public static DistanceResult3 SegmentSegment(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1)
         {
             double r2 = SegmentSegmentCore(a0, a1, b0, b1, out double s, out double t);
+            s += 0; t += 0; // −0 + 0 = 0: the two argument orders may reach a zero parameter with either sign
             return new DistanceResult3(Math.Sqrt(r2), r2, SegmentPoint(a0, a1, s), SegmentPoint(b0, b1, t), s, t);
         }
 
