@@ -163,21 +163,31 @@ namespace ProximityReference
             return r.LengthSquared;
         }
 
-        /// <summary>The configuration's local scale S: the largest coordinate difference between defining points, or radius.</summary>
-        public static double Scale(RShape a, RShape b)
+        /// <summary>
+        /// The configuration's local scale S: the largest coordinate difference between defining points, or radius.
+        /// Exact (differences taken in rationals), so it does not overflow for coordinates near ±1e308.
+        /// </summary>
+        public static Rational LocalScale(RShape a, RShape b)
         {
-            var pts = new List<Vector3D>();
-            foreach (var p in a.Defining) pts.Add(p.ToDouble());
-            foreach (var p in b.Defining) pts.Add(p.ToDouble());
-            double s = Math.Max(a.Radius.ToDouble(), b.Radius.ToDouble());
-            for (int i = 0; i < pts.Count; i++)
-                for (int j = i + 1; j < pts.Count; j++)
+            var pts = new List<RVec>(a.Defining);
+            pts.AddRange(b.Defining);
+            // Only spheres set a radius (a default Rational is not a valid zero).
+            var s = Rational.Max(a.Kind == RKind.Sphere ? a.Radius : Rational.Zero, b.Kind == RKind.Sphere ? b.Radius : Rational.Zero);
+            foreach (Func<RVec, Rational> axis in new Func<RVec, Rational>[] { p => p.X, p => p.Y, p => p.Z })
+            {
+                Rational lo = axis(pts[0]), hi = lo;
+                foreach (var p in pts)
                 {
-                    var d = pts[i] - pts[j];
-                    s = Math.Max(s, Math.Max(Math.Abs(d.X), Math.Max(Math.Abs(d.Y), Math.Abs(d.Z))));
+                    lo = Rational.Min(lo, axis(p));
+                    hi = Rational.Max(hi, axis(p));
                 }
+                s = Rational.Max(s, hi - lo);
+            }
             return s;
         }
+
+        /// <summary>S as a double (+∞ only when S itself exceeds the double range).</summary>
+        public static double Scale(RShape a, RShape b) => LocalScale(a, b).ToDouble();
 
         /// <summary>E = |d − d*| / (u·S), in units of the precision's unit roundoff u at the configuration's scale.</summary>
         public static double Error(double d, Rational exact, double u, double scale)
