@@ -22,6 +22,8 @@ namespace ProximityReference.Fuzz
             public double Single { get; init; }
             /// <summary>The result at index j of the larger sets.</summary>
             public double InSet { get; init; }
+            /// <summary>C# for the call on the larger sets (arrays setA and setB; declares dn or on).</summary>
+            public string CodeInSet { get; init; }
         }
 
         private delegate void Fn<TX, TY, TR>(TX x, TY y, TR[] result);
@@ -73,13 +75,17 @@ namespace ProximityReference.Fuzz
                 int n = arrB.Length;
                 string pairedArgs = $"new {setA}(new[] {{ a }}), new {setB}(new[] {{ b }})";
                 string oneArgs = $"a, new {setB}(new[] {{ b }})";
+                string pairedMany = $"new {setA}(setA), new {setB}(setB)";
+                string oneMany = $"a, new {setB}(setB)";
+                string InSet(string type, string name, string args, string call) =>
+                    $"var {name} = new {type}[{n}]; BatchQuery.{call}({args}, {name}); // {name}[{j}]";
                 if (pairedD != null)
                 {
                     float[] r1 = new float[1], rn = new float[n];
                     pairedD(oneA, oneB, r1);
                     pairedD(manyA, manyB, rn);
                     yield return new Run { Name = "BatchQuery.Distances (paired)", IsDistance = true, Single = r1[0], InSet = rn[j],
-                        Code = $"var d = new float[1]; BatchQuery.Distances({pairedArgs}, d);" };
+                        Code = $"var d = new float[1]; BatchQuery.Distances({pairedArgs}, d);", CodeInSet = InSet("float", "dn", pairedMany, "Distances") };
                 }
                 if (oneD != null)
                 {
@@ -87,7 +93,7 @@ namespace ProximityReference.Fuzz
                     oneD(ta, oneB, r1);
                     oneD(ta, manyB, rn);
                     yield return new Run { Name = "BatchQuery.Distances (one against many)", IsDistance = true, Single = r1[0], InSet = rn[j],
-                        Code = $"var d = new float[1]; BatchQuery.Distances({oneArgs}, d);" };
+                        Code = $"var d = new float[1]; BatchQuery.Distances({oneArgs}, d);", CodeInSet = InSet("float", "dn", oneMany, "Distances") };
                 }
                 if (pairedO != null)
                 {
@@ -95,7 +101,7 @@ namespace ProximityReference.Fuzz
                     pairedO(oneA, oneB, r1);
                     pairedO(manyA, manyB, rn);
                     yield return new Run { Name = "BatchQuery.Overlaps (paired)", Single = r1[0] ? 1 : 0, InSet = rn[j] ? 1 : 0,
-                        Code = $"var o = new bool[1]; BatchQuery.Overlaps({pairedArgs}, o);" };
+                        Code = $"var o = new bool[1]; BatchQuery.Overlaps({pairedArgs}, o);", CodeInSet = InSet("bool", "on", pairedMany, "Overlaps") };
                 }
                 if (oneO != null)
                 {
@@ -103,7 +109,7 @@ namespace ProximityReference.Fuzz
                     oneO(ta, oneB, r1);
                     oneO(ta, manyB, rn);
                     yield return new Run { Name = "BatchQuery.Overlaps (one against many)", Single = r1[0] ? 1 : 0, InSet = rn[j] ? 1 : 0,
-                        Code = $"var o = new bool[1]; BatchQuery.Overlaps({oneArgs}, o);" };
+                        Code = $"var o = new bool[1]; BatchQuery.Overlaps({oneArgs}, o);", CodeInSet = InSet("bool", "on", oneMany, "Overlaps") };
                 }
             }
             return new BatchOps(Runs);

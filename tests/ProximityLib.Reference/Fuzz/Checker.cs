@@ -219,7 +219,7 @@ namespace ProximityReference.Fuzz
             }
             Vector3D b_minus_a(Search.Pair p) => second.LocalPoint(p.B) - first.LocalPoint(p.A);
             double lra = first.LocalRadius(_frame), lrb = second.LocalRadius(_frame);
-            foreach (var (n, _) in Search.BestDirections(first, second, lra, lrb, extra, default, 2))
+            foreach (var n in Search.BestDirections(first, second, lra, lrb, extra, default, 6))
             {
                 var nn = DyVec.From(n);
                 var g = -second.Support(-nn) - first.Support(nn);
@@ -236,13 +236,16 @@ namespace ProximityReference.Fuzz
             {
                 var v = pb - pa;
                 var lv = _frame.ToLocal(pb) - _frame.ToLocal(pa);
-                foreach (var (n, _) in Search.BestDirections(first, second, lra, lrb, new[] { lv }, lv, 1))
+                foreach (var n in Search.BestDirections(first, second, lra, lrb, new[] { lv }, lv, 6))
                 {
                     var nn = DyVec.From(n);
                     var g = -second.Support(-nn) - first.Support(nn) - DyVec.Dot(v, nn);
                     if (!DyMath.TimesRootAtLeast(ra + rb + tolW, nn.LengthSquared, g))
+                    {
                         Fail("e push-out touches", $"{call}: after moving the first shape by PointB − PointA the shapes are apart along n = {n} by " +
                             $"{(g.ToDouble() / DyMath.Sqrt(nn.LengthSquared) - ra.ToDouble() - rb.ToDouble()):R} > {tolText}", code);
+                        break;
+                    }
                 }
             }
 
@@ -482,14 +485,18 @@ namespace ProximityReference.Fuzz
             var fillB = Fillers(_c.B, n, rng);
             foreach (var run in ops.Runs(_a, _b, fillA.Select(s => s.Build()).ToArray(), fillB.Select(s => s.Build()).ToArray(), j))
             {
-                var code = new List<string> { run.Code, $"// got {run.Single}; scalar: {Show(ab)}, Overlaps {oab}" };
+                string got = run.IsDistance ? $"d[0] = {N(run.Single)}" : $"o[0] = {run.Single != 0}";
+                var code = new List<string> { run.Code, $"// got {got}; scalar API: {Show(ab)}, Overlaps {oab}" };
                 string what = run.Name;
                 if (!Spec.Bits(run.Single, run.InSet))
                 {
-                    var lane = new List<string>(code);
-                    lane.Insert(0, $"var setA = new[] {{ {string.Join(", ", fillA.Select((s, i) => i == j ? "a" : s.ToCSharp()))} }};");
-                    lane.Insert(1, $"var setB = new[] {{ {string.Join(", ", fillB.Select((s, i) => i == j ? "b" : s.ToCSharp()))} }};");
-                    Fail("k batch lane", $"{what}: {run.InSet:R} at index {j} of a set of {n} but {run.Single:R} in a set of one", lane, true);
+                    var lane = new List<string>
+                    {
+                        $"var setA = new[] {{ {string.Join(", ", fillA.Select((s, i) => i == j ? "a" : s.ToCSharp()))} }};",
+                        $"var setB = new[] {{ {string.Join(", ", fillB.Select((s, i) => i == j ? "b" : s.ToCSharp()))} }};",
+                        run.Code, run.CodeInSet, $"// got {got} on sets of one, {N(run.InSet)} at index {j}",
+                    };
+                    Fail("k batch lane", $"{what}: {N(run.InSet)} at index {j} of a set of {n} (setA, setB) but {N(run.Single)} in a set of one", lane, true);
                 }
                 double v = run.Single;
                 if (double.IsNaN(v)) { Fail("k batch vs scalar", $"{what} returned NaN", code, true); continue; }
@@ -497,13 +504,13 @@ namespace ProximityReference.Fuzz
                 {
                     var diff = (Dy)v - (Dy)ab.D;
                     if (double.IsInfinity(v) || Dy.Abs(diff) > _unit * (8 + _bound))
-                        Fail("k batch vs scalar", $"{what} = {v:R} but the scalar float API gives {N(ab.D)}: {(double.IsInfinity(v) ? "∞" : Units(diff))} > (8 + {_bound}) U", code, true);
+                        Fail("k batch vs scalar", $"{what} = {N(v)} but the scalar float API gives {N(ab.D)}: {(double.IsInfinity(v) ? "∞" : Units(diff))} > (8 + {_bound}) U", code, true);
                     if (_exactValue.HasValue && double.IsFinite(v))
                     {
                         var err = Rational.Abs(Rational.FromDouble(v) - _exactValue.Value);
                         var unit = _unit.ToRational();
                         if (err > unit * 8)
-                            Fail("k batch E ≤ 8", $"{what} = {v:R}, exact {_exactValue.Value.ToDouble():R}: E = {(err / unit).ToDouble():G4} > 8 (S = {_s.ToDouble():G4})", code, true);
+                            Fail("k batch E ≤ 8", $"{what} = {N(v)}, exact {_exactValue.Value.ToDouble():R}: E = {(err / unit).ToDouble():G4} > 8 (S = {_s.ToDouble():G4})", code, true);
                     }
                 }
                 else

@@ -296,12 +296,17 @@ namespace ProximityReference.Fuzz
             }
         }
 
-        /// <summary>Edge directions (segment direction, box axes with non-zero extent), for separating directions.</summary>
-        public IEnumerable<Vector3D> Directions()
+        /// <summary>Edge directions, exactly: the segment's end − start, the box axes with non-zero extent.</summary>
+        public IEnumerable<DyVec> Directions()
         {
-            if (Kind == Kind.Segment && (_q - _p).LengthSquared > 0) yield return _q - _p;
+            if (Kind == Kind.Segment)
+            {
+                var d = DyVec.From(Q) - DyVec.From(P);
+                if (!d.LengthSquared.IsZero) yield return d;
+            }
             if (IsBox)
-                for (int i = 0; i < (Planar ? 2 : 3); i++) yield return Axes[i];
+                for (int i = 0; i < (Planar ? 2 : 3); i++)
+                    if (Kind == Kind.Obb ? Get(H, i).Sign > 0 : Get(Q, i) > Get(P, i)) yield return DyVec.From(Axes[i]);
         }
 
         /// <summary>max over the core of x·n in the local copy (approximate; for ranking directions).</summary>

@@ -88,7 +88,9 @@ namespace ProximityReference.Fuzz
             }
             sb.AppendLine($"{FailureCount} violations in {FailedCases} cases.");
             sb.AppendLine();
-            var all = Failures.OrderByDescending(kv => kv.Value.Count).ThenBy(kv => kv.Key.Pair).ThenBy(kv => kv.Key.Invariant).ToList();
+            var all = Failures.OrderByDescending(kv => kv.Value.Count).ThenBy(kv => kv.Key.Pair, StringComparer.Ordinal)
+                .ThenBy(kv => kv.Key.Precision, StringComparer.Ordinal).ThenBy(kv => kv.Key.Invariant, StringComparer.Ordinal)
+                .ThenBy(kv => kv.Key.Generator, StringComparer.Ordinal).ToList();
             sb.AppendLine("| pair | precision | invariant | generator | failures | of cases | first case |");
             sb.AppendLine("| --- | --- | --- | --- | --- | --- | --- |");
             foreach (var kv in all.Take(rows))

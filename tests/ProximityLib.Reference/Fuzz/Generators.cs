@@ -739,9 +739,9 @@ namespace ProximityReference.Fuzz
             return Finish(boxA, boxB, p);
         }
 
-        /// <summary>One box in three is flat: each of its extents is zero with probability 1/2 (plates, edges, points).</summary>
+        /// <summary>One box in two is flat: each of its extents is zero with probability 1/2 (plates, edges, points).</summary>
         private static Vector3D Flatten(Rng r, Vector3D h) =>
-            r.Chance(2.0 / 3) ? h : new Vector3D(r.Chance(0.5) ? 0 : h.X, r.Chance(0.5) ? 0 : h.Y, r.Chance(0.5) ? 0 : h.Z);
+            r.Chance(0.5) ? h : new Vector3D(r.Chance(0.5) ? 0 : h.X, r.Chance(0.5) ? 0 : h.Y, r.Chance(0.5) ? 0 : h.Z);
 
         /// <summary>
         /// Two boxes whose rotations differ by 10^−6…10^−16 (quaternion components perturbed), stacked with 10–50%
@@ -751,7 +751,7 @@ namespace ProximityReference.Fuzz
         {
             double s = r.Pow2(-10, 10), delta = r.Pow10Neg(6, 16);
             var ha = Flatten(r, new Vector3D(r.Range(0.3, 1), r.Range(0.3, 1), dim == 3 ? r.Range(0.3, 1) : 0) * s);
-            var hb = r.Chance(0.2) ? ha : Flatten(r, new Vector3D(r.Range(0.3, 1), r.Range(0.3, 1), dim == 3 ? r.Range(0.3, 1) : 0) * s);
+            var hb = r.Chance(0.5) ? ha : Flatten(r, new Vector3D(r.Range(0.3, 1), r.Range(0.3, 1), dim == 3 ? r.Range(0.3, 1) : 0) * s);
             var ca = U3(r, 1, dim) * s;
             double[] qa, qb;
             if (ka == Kind.Aabb) qa = new double[] { 0, 0, 0, 1 };

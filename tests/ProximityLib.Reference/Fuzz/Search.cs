@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Linq;
 using ProximityLib.Double;
 
 namespace ProximityReference.Fuzz
@@ -112,51 +113,61 @@ namespace ProximityReference.Fuzz
         }
 
         /// <summary>
-        /// The best <paramref name="keep"/> directions n (from A toward B), ranked by the local lower bound
-        /// (min_B x·n − max_A x·n − shift·n)/|n| − rA − rB, largest first. <paramref name="shift"/> moves A (local units).
+        /// Candidate directions n (from A toward B) for the lower bound (min_B x·n − max_A x·n − shift·n)/|n| − rA − rB,
+        /// ranked in the local copy: every one within <see cref="Tie"/> of the best (local rounding cannot rank those),
+        /// at most <paramref name="keep"/>. Cross products of edge directions are formed exactly and only then rounded,
+        /// so the normal of two nearly parallel edges is accurate (in doubles it would be cancellation noise).
+        /// <paramref name="shift"/> moves A (local units).
         /// </summary>
-        public static List<(Vector3D N, double G)> BestDirections(Core a, Core b, double ra, double rb, IEnumerable<Vector3D> extra,
+        public static List<Vector3D> BestDirections(Core a, Core b, double ra, double rb, IEnumerable<Vector3D> extra,
             Vector3D shift, int keep)
         {
             bool planar = a.Planar || b.Planar;
             var dirs = new List<Vector3D> { Vector3D.UnitX, Vector3D.UnitY };
             if (!planar) dirs.Add(Vector3D.UnitZ);
-            var da = new List<Vector3D>(a.Directions());
-            var db = new List<Vector3D>(b.Directions());
-            dirs.AddRange(da);
-            dirs.AddRange(db);
-            if (planar)
+            var da = new List<DyVec>(a.Directions());
+            var db = new List<DyVec>(b.Directions());
+            foreach (var d in da.Concat(db))
             {
-                foreach (var d in da) dirs.Add(new Vector3D(-d.Y, d.X, 0));
-                foreach (var d in db) dirs.Add(new Vector3D(-d.Y, d.X, 0));
+                dirs.Add(Round(d));
+                if (planar) dirs.Add(Round(new DyVec(-d.Y, d.X, Dy.Zero)));
             }
-            else
-            {
+            if (!planar)
                 foreach (var u in da)
                     foreach (var v in db)
-                        dirs.Add(Vector3D.Cross(u, v));
-            }
+                        dirs.Add(Round(new DyVec(u.Y * v.Z - u.Z * v.Y, u.Z * v.X - u.X * v.Z, u.X * v.Y - u.Y * v.X)));
             dirs.AddRange(extra);
-            var best = new List<(Vector3D, double)>();
+            var ranked = new List<(Vector3D N, double G)>();
             foreach (var d0 in dirs)
             {
                 var d = planar ? new Vector3D(d0.X, d0.Y, 0) : d0;
                 double len = d.Length;
                 if (!(len > 0) || !double.IsFinite(len)) continue;
-                // Rescale so tiny or huge cross products stay in range for the exact pass.
                 d = d / len;
                 foreach (var n in new[] { d, -d })
                 {
                     double g = -b.LocalSupport(-n) - a.LocalSupport(n) - Vector3D.Dot(shift, n) - ra - rb;
-                    if (!double.IsFinite(g)) continue;
-                    int i = best.Count;
-                    while (i > 0 && best[i - 1].Item2 < g) i--;
-                    if (i >= keep) continue;
-                    best.Insert(i, (n, g));
-                    if (best.Count > keep) best.RemoveAt(keep);
+                    if (double.IsFinite(g)) ranked.Add((n, g));
                 }
             }
+            ranked.Sort((x, y) => y.G.CompareTo(x.G));
+            var best = new List<Vector3D>();
+            foreach (var (n, g) in ranked)
+            {
+                if (best.Count >= keep || (best.Count > 0 && g < ranked[0].G - Tie)) break;
+                best.Add(n);
+            }
             return best;
+        }
+
+        /// <summary>Local gaps closer than this to the best (local units, the configuration's size ~1) are ties.</summary>
+        public const double Tie = 1e-9;
+
+        /// <summary>An exact direction rounded to doubles after scaling it to about unit length (no under- or overflow).</summary>
+        private static Vector3D Round(DyVec v)
+        {
+            var m = Dy.Max(Dy.Abs(v.X), Dy.Max(Dy.Abs(v.Y), Dy.Abs(v.Z)));
+            return m.IsZero ? default : v.Times2(-m.Log2).ToDouble();
         }
     }
 }

@@ -16,7 +16,7 @@ namespace ProximityTests.Fuzz
     {
         public const long DefaultSeed = 2026;
         /// <summary>A multiple of 60: every block of 60 consecutive cases covers all 30 pairs in both precisions.</summary>
-        public const long DefaultCases = 150_000;
+        public const long DefaultCases = 240_000;
 
         private static long Setting(string name, long fallback)
         {
