@@ -45,6 +45,11 @@ catch (Exception e) when (e is FormatException || e is OverflowException || e is
     Console.Error.WriteLine($"bad option value: {e.Message} (try --help)");
     return 2;
 }
+if (fuzz < 0 || start < 0 || threads < 1 || repros < 0)
+{
+    Console.Error.WriteLine("--fuzz, --start and --repros must not be negative and --threads must be at least 1 (try --help)");
+    return 2;
+}
 
 if (replay != null)
 {
@@ -54,18 +59,28 @@ if (replay != null)
         Console.Error.WriteLine($"--fuzz-replay needs SEED:INDEX (got '{replay}')");
         return 2;
     }
-    Console.Write(Engine.Replay(rs, ri));
+    try { Console.Write(Engine.Replay(rs, ri)); }
+    catch (Exception e) { Console.Error.WriteLine($"error: case {rs}:{ri} could not be checked: {e.Message}"); return 2; }
     return 0;
 }
 
 if (fuzz > 0)
 {
     Console.Error.WriteLine($"fuzz: {fuzz} cases from {start}, seed {seed}, {threads} threads");
-    var report = Engine.Run(new FuzzOptions
+    FuzzReport report;
+    try
     {
-        Seed = seed, Start = start, Count = fuzz, Threads = threads, Repros = repros,
-        Progress = line => Console.Error.WriteLine("  " + line),
-    });
+        report = Engine.Run(new FuzzOptions
+        {
+            Seed = seed, Start = start, Count = fuzz, Threads = threads,
+            Progress = line => Console.Error.WriteLine("  " + line),
+        });
+    }
+    catch (AggregateException e)
+    {
+        Console.Error.WriteLine($"error: the fuzz engine failed: {e.InnerException?.Message ?? e.Message}");
+        return 2;
+    }
     string text = report.Format(repros);
     if (output != null) File.WriteAllText(output, text);
     Console.Write(text);

@@ -155,7 +155,8 @@ namespace ProximityReference.Fuzz
             {
                 // Infinite only when the true distance is not representable: any real pair of points bounds it from above.
                 var best = Search.BestPairs(first, second, Array.Empty<Vector3D>(), Array.Empty<Vector3D>(), _c.Rng, 1);
-                if (r.D < 0 || (best.Count > 0 && DyMath.AtLeastRoot(max + first.R + second.R,
+                // A depth exceeds the range only when the shapes' size S does.
+                if ((r.D < 0 && _s < max) || (r.D > 0 && best.Count > 0 && DyMath.AtLeastRoot(max + first.R + second.R,
                         (first.ExactPoint(best[0].A, _frame) - second.ExactPoint(best[0].B, _frame)).LengthSquared)))
                     problems.Add($"Distance = {N(r.D)} although the distance is representable");
             }

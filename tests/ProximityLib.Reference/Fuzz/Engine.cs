@@ -14,10 +14,6 @@ namespace ProximityReference.Fuzz
         public long Start { get; set; }
         public long Count { get; set; } = 6000;
         public int Threads { get; set; } = Environment.ProcessorCount;
-        /// <summary>How many repros the report prints (one per row of the failure table, most frequent first).</summary>
-        public int Repros { get; set; } = 20;
-        /// <summary>Exact reference on one case in this many (per pair class, see <see cref="Engine.ExactEvery"/>), multiplied by this factor.</summary>
-        public int ExactThinning { get; set; } = 1;
         /// <summary>Called every few seconds with a progress line.</summary>
         public Action<string>? Progress { get; set; }
         public TimeSpan ProgressEvery { get; set; } = TimeSpan.FromSeconds(10);
@@ -128,8 +124,7 @@ namespace ProximityReference.Fuzz
             return boxes == 0 ? 1 : boxes == 1 ? 8 : 40;
         }
 
-        public static bool IsExact(FuzzCase c, int thinning) =>
-            Rng.Mix((ulong)c.Seed * 31 + (ulong)c.Index) % (ulong)(ExactEvery(c) * Math.Max(1, thinning)) == 0;
+        public static bool IsExact(FuzzCase c) => Rng.Mix((ulong)c.Seed * 31 + (ulong)c.Index) % (ulong)ExactEvery(c) == 0;
 
         public static FuzzReport Run(FuzzOptions o)
         {
@@ -150,7 +145,7 @@ namespace ProximityReference.Fuzz
                     for (long i = from; i < to; i++)
                     {
                         var c = FuzzCase.Create(o.Seed, i);
-                        bool exact = IsExact(c, o.ExactThinning);
+                        bool exact = IsExact(c);
                         List<Failure> fails;
                         var ran = new HashSet<string>();
                         try { fails = Checker.Run(c, exact, ran); }

@@ -106,8 +106,6 @@ namespace ProximityReference.Fuzz
         /// <summary>Position coordinates per axis (what a translation adds to).</summary>
         public Vector3D[] Positions() => QIsPosition ? new[] { P, Q } : new[] { P };
 
-        public bool IsSolid => Kind == Kind.Sphere || Kind == Kind.Aabb || Kind == Kind.Obb;
-
         /// <summary>Builds the library's shape (double or float API) through the constructor the repro prints.</summary>
         public object Build()
         {
@@ -219,15 +217,6 @@ namespace ProximityReference.Fuzz
             Kind.Aabb => "AABB",
             _ => "OBB",
         };
-
-        /// <summary>Bitwise equality of the constructor arguments (identical shapes).</summary>
-        public bool SameAs(Spec o)
-        {
-            if (Kind != o.Kind || Dim != o.Dim || Float != o.Float || Form != o.Form || Rot.Length != o.Rot.Length) return false;
-            if (!Bits(P, o.P) || !Bits(Q, o.Q) || !Bits(H, o.H) || !Bits(R, o.R)) return false;
-            for (int i = 0; i < Rot.Length; i++) if (!Bits(Rot[i], o.Rot[i])) return false;
-            return true;
-        }
 
         public static bool Bits(double a, double b) => BitConverter.DoubleToInt64Bits(a) == BitConverter.DoubleToInt64Bits(b);
         public static bool Bits(Vector3D a, Vector3D b) => Bits(a.X, b.X) && Bits(a.Y, b.Y) && Bits(a.Z, b.Z);
