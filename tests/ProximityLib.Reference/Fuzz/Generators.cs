@@ -739,9 +739,17 @@ namespace ProximityReference.Fuzz
             return Finish(boxA, boxB, p);
         }
 
-        /// <summary>One box in two is flat: each of its extents is zero with probability 1/2 (plates, edges, points).</summary>
-        private static Vector3D Flatten(Rng r, Vector3D h) =>
-            r.Chance(0.5) ? h : new Vector3D(r.Chance(0.5) ? 0 : h.X, r.Chance(0.5) ? 0 : h.Y, r.Chance(0.5) ? 0 : h.Z);
+        /// <summary>One box in two is flat: half of those are edges (one non-zero extent), the rest lose each extent with probability 1/2.</summary>
+        private static Vector3D Flatten(Rng r, Vector3D h)
+        {
+            if (r.Chance(0.5)) return h;
+            if (r.Chance(0.5))
+            {
+                int keep = r.Int(3);
+                return new Vector3D(keep == 0 ? h.X : 0, keep == 1 ? h.Y : 0, keep == 2 ? h.Z : 0);
+            }
+            return new Vector3D(r.Chance(0.5) ? 0 : h.X, r.Chance(0.5) ? 0 : h.Y, r.Chance(0.5) ? 0 : h.Z);
+        }
 
         /// <summary>
         /// Two boxes whose rotations differ by 10^−6…10^−16 (quaternion components perturbed), stacked with 10–50%
