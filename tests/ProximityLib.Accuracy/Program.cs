@@ -5,26 +5,87 @@ using System.IO;
 using System.Linq;
 using System.Text;
 using ProximityReference;
+using ProximityReference.Fuzz;
 
 // Usage: dotnet run --project tests/ProximityLib.Accuracy -c Release -- [--cases N] [--seed S] [--family NAME] [--out FILE]
+//        ... -- --fuzz N [--seed S] [--start I] [--threads T] [--repros R] [--out FILE]
+//        ... -- --fuzz-replay SEED:INDEX
 CultureInfo.CurrentCulture = CultureInfo.InvariantCulture;
 int cases = 20, seed = 2026;
-string? output = null, only = null;
-for (int i = 0; i < args.Length; i++)
+long fuzz = 0, start = 0;
+int threads = Environment.ProcessorCount, repros = 20;
+string? output = null, replay = null, only = null;
+try
 {
-    switch (args[i])
+    for (int i = 0; i < args.Length; i++)
     {
-        case "--cases": cases = int.Parse(args[++i]); break;
-        case "--seed": seed = int.Parse(args[++i]); break;
-        case "--out": output = args[++i]; break;
-        case "--family": only = args[++i]; break;
-        case "--help":
-            Console.WriteLine("accuracy [--cases N (per family parameter, default 20)] [--seed S] [--family NAME (one family only)] [--out docs/accuracy.md]");
-            return 0;
-        default:
-            Console.Error.WriteLine($"unknown option '{args[i]}' (try --help)");
-            return 2;
+        switch (args[i])
+        {
+            case "--cases": cases = int.Parse(args[++i]); break;
+            case "--seed": seed = int.Parse(args[++i]); break;
+            case "--out": output = args[++i]; break;
+            case "--family": only = args[++i]; break;
+            case "--fuzz": fuzz = long.Parse(args[++i]); break;
+            case "--start": start = long.Parse(args[++i]); break;
+            case "--threads": threads = int.Parse(args[++i]); break;
+            case "--repros": repros = int.Parse(args[++i]); break;
+            case "--fuzz-replay": replay = args[++i]; break;
+            case "--help":
+                Console.WriteLine("accuracy [--cases N (per family parameter, default 20)] [--seed S] [--family NAME (one family only)] [--out docs/accuracy.md]");
+                Console.WriteLine("accuracy --fuzz N [--seed S] [--start I] [--threads T] [--repros R] [--out FILE]   differential fuzz of N cases");
+                Console.WriteLine("accuracy --fuzz-replay SEED:INDEX                                                 one fuzz case, every check, repros");
+                return 0;
+            default:
+                Console.Error.WriteLine($"unknown option '{args[i]}' (try --help)");
+                return 2;
+        }
     }
+}
+catch (Exception e) when (e is FormatException || e is OverflowException || e is IndexOutOfRangeException)
+{
+    Console.Error.WriteLine($"bad option value: {e.Message} (try --help)");
+    return 2;
+}
+if (fuzz < 0 || start < 0 || threads < 1 || repros < 0)
+{
+    Console.Error.WriteLine("--fuzz, --start and --repros must not be negative and --threads must be at least 1 (try --help)");
+    return 2;
+}
+
+if (replay != null)
+{
+    var parts = replay.Split(':');
+    if (parts.Length != 2 || !long.TryParse(parts[0], out long rs) || !long.TryParse(parts[1], out long ri) || ri < 0)
+    {
+        Console.Error.WriteLine($"--fuzz-replay needs SEED:INDEX (got '{replay}')");
+        return 2;
+    }
+    try { Console.Write(Engine.Replay(rs, ri)); }
+    catch (Exception e) { Console.Error.WriteLine($"error: case {rs}:{ri} could not be checked: {e.Message}"); return 2; }
+    return 0;
+}
+
+if (fuzz > 0)
+{
+    Console.Error.WriteLine($"fuzz: {fuzz} cases from {start}, seed {seed}, {threads} threads");
+    FuzzReport report;
+    try
+    {
+        report = Engine.Run(new FuzzOptions
+        {
+            Seed = seed, Start = start, Count = fuzz, Threads = threads,
+            Progress = line => Console.Error.WriteLine("  " + line),
+        });
+    }
+    catch (AggregateException e)
+    {
+        Console.Error.WriteLine($"error: the fuzz engine failed: {e.InnerException?.Message ?? e.Message}");
+        return 2;
+    }
+    string text = report.Format(repros);
+    if (output != null) File.WriteAllText(output, text);
+    Console.Write(text);
+    return report.Failures.Count == 0 ? 0 : 1;
 }
 
 var all = new List<Measurement>();

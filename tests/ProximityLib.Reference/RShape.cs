@@ -34,6 +34,18 @@ namespace ProximityReference
             return s;
         }
 
+        /// <summary>The same shape moved by t, exactly (no rounding: the moved shape need not have double coordinates).</summary>
+        public RShape Translated(RVec t)
+        {
+            var s = new RShape { Kind = Kind, Planar = Planar, Center = Kind == RKind.Segment ? Center : Center + t, Radius = Radius };
+            foreach (var v in Vertices) s.Vertices.Add(v + t);
+            foreach (var e in Edges) s.Edges.Add((e.Origin + t, e.Dir));
+            foreach (var f in Faces) s.Faces.Add((f.Origin + t, f.U, f.V));
+            s.Directions.AddRange(Directions);
+            foreach (var d in Defining) s.Defining.Add(d + t);
+            return s;
+        }
+
         public bool IsSolid => Kind == RKind.Sphere || Kind == RKind.Box;
 
         /// <summary>True when the shape spans fewer dimensions than its space (point, segment, flat box).</summary>

@@ -165,29 +165,29 @@ namespace ProximityReference
 
         /// <summary>
         /// The configuration's local scale S: the largest coordinate difference between defining points, or radius.
-        /// Formed exactly (a double difference overflows for coordinates near ±1.8e308); +∞ only when S itself exceeds
-        /// the double range.
+        /// Exact (differences taken in rationals), so it does not overflow for coordinates near ±1e308.
         /// </summary>
-        public static double Scale(RShape a, RShape b)
+        public static Rational LocalScale(RShape a, RShape b)
         {
             var pts = new List<RVec>(a.Defining);
             pts.AddRange(b.Defining);
-            var s = Rational.Zero;
-            if (a.Kind == RKind.Sphere) s = Rational.Max(s, a.Radius);
-            if (b.Kind == RKind.Sphere) s = Rational.Max(s, b.Radius);
-            for (int axis = 0; axis < 3; axis++)
+            // Only spheres set a radius (a default Rational is not a valid zero).
+            var s = Rational.Max(a.Kind == RKind.Sphere ? a.Radius : Rational.Zero, b.Kind == RKind.Sphere ? b.Radius : Rational.Zero);
+            foreach (Func<RVec, Rational> axis in new Func<RVec, Rational>[] { p => p.X, p => p.Y, p => p.Z })
             {
-                Rational? lo = null, hi = null;
+                Rational lo = axis(pts[0]), hi = lo;
                 foreach (var p in pts)
                 {
-                    var x = axis == 0 ? p.X : axis == 1 ? p.Y : p.Z;
-                    if (lo == null || x < lo.Value) lo = x;
-                    if (hi == null || x > hi.Value) hi = x;
+                    lo = Rational.Min(lo, axis(p));
+                    hi = Rational.Max(hi, axis(p));
                 }
-                if (lo != null) s = Rational.Max(s, hi!.Value - lo.Value);
+                s = Rational.Max(s, hi - lo);
             }
-            return s.ToDouble();
+            return s;
         }
+
+        /// <summary>S as a double (+∞ only when S itself exceeds the double range).</summary>
+        public static double Scale(RShape a, RShape b) => LocalScale(a, b).ToDouble();
 
         /// <summary>E = |d − d*| / (u·S), in units of the precision's unit roundoff u at the configuration's scale.</summary>
         public static double Error(double d, Rational exact, double u, double scale)

@@ -1,0 +1,193 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.Linq;
+using System.Text;
+using System.Threading;
+using System.Threading.Tasks;
+
+namespace ProximityReference.Fuzz
+{
+    public sealed class FuzzOptions
+    {
+        public long Seed { get; set; } = 1;
+        public long Start { get; set; }
+        public long Count { get; set; } = 6000;
+        public int Threads { get; set; } = Environment.ProcessorCount;
+        /// <summary>Called every few seconds with a progress line.</summary>
+        public Action<string>? Progress { get; set; }
+        public TimeSpan ProgressEvery { get; set; } = TimeSpan.FromSeconds(10);
+    }
+
+    /// <summary>Failure counts per (pair, precision, invariant, generator), the first failure of each, and case counts.</summary>
+    public sealed class FuzzReport
+    {
+        public long Seed { get; init; }
+        public long Start { get; init; }
+        public long Cases { get; set; }
+        public long ExactCases { get; set; }
+        public long FailedCases { get; set; }
+        public TimeSpan Elapsed { get; set; }
+        public Dictionary<(string Pair, string Precision), long> CasesPerPair { get; } = new Dictionary<(string, string), long>();
+        /// <summary>How many cases ran each optional check (translation and scaling need an exact transform, the batch a float 3D pair in its range).</summary>
+        public Dictionary<string, long> Ran { get; } = new Dictionary<string, long>();
+        public Dictionary<(string Pair, string Precision, string Invariant, string Generator), (long Count, Failure First)> Failures { get; } =
+            new Dictionary<(string, string, string, string), (long, Failure)>();
+
+        public void Add(FuzzCase c, List<Failure> fails, bool exact, IEnumerable<string> ran)
+        {
+            foreach (var r in ran) Ran[r] = Ran.GetValueOrDefault(r) + 1;
+            Cases++;
+            if (exact) ExactCases++;
+            var key = (c.Pair, c.PrecisionName);
+            CasesPerPair[key] = CasesPerPair.GetValueOrDefault(key) + 1;
+            if (fails.Count > 0) FailedCases++;
+            foreach (var f in fails)
+            {
+                var k = (c.Pair, c.PrecisionName, f.Invariant, c.Generator);
+                if (Failures.TryGetValue(k, out var e))
+                    Failures[k] = (e.Count + 1, f.Case.Index < e.First.Case.Index ? f : e.First);
+                else
+                    Failures[k] = (1, f);
+            }
+        }
+
+        public void Merge(FuzzReport o)
+        {
+            Cases += o.Cases;
+            ExactCases += o.ExactCases;
+            FailedCases += o.FailedCases;
+            foreach (var kv in o.Ran) Ran[kv.Key] = Ran.GetValueOrDefault(kv.Key) + kv.Value;
+            foreach (var kv in o.CasesPerPair) CasesPerPair[kv.Key] = CasesPerPair.GetValueOrDefault(kv.Key) + kv.Value;
+            foreach (var kv in o.Failures)
+            {
+                if (Failures.TryGetValue(kv.Key, out var e))
+                    Failures[kv.Key] = (e.Count + kv.Value.Count, kv.Value.First.Case.Index < e.First.Case.Index ? kv.Value.First : e.First);
+                else
+                    Failures[kv.Key] = kv.Value;
+            }
+        }
+
+        public long FailureCount => Failures.Values.Sum(v => v.Count);
+
+        /// <summary>The summary table (at most <paramref name="rows"/> rows, most frequent first) and the first <paramref name="repros"/> repros (one per row).</summary>
+        public string Format(int repros, int rows = int.MaxValue)
+        {
+            var sb = new StringBuilder();
+            sb.AppendLine($"Fuzz: seed {Seed}, cases {Start}..{Start + Cases - 1} ({Cases} cases, {ExactCases} against the exact reference) " +
+                          $"in {Elapsed.TotalSeconds:F1} s; {CasesPerPair.Values.DefaultIfEmpty().Min()}–{CasesPerPair.Values.DefaultIfEmpty().Max()} cases per pair and precision.");
+            sb.AppendLine("Cases per optional check: " + string.Join(", ", Ran.OrderBy(kv => kv.Key).Select(kv => $"{kv.Key} {kv.Value}")) + ".");
+            if (Failures.Count == 0)
+            {
+                sb.AppendLine("No invariant violated.");
+                return sb.ToString();
+            }
+            sb.AppendLine($"{FailureCount} violations in {FailedCases} cases.");
+            sb.AppendLine();
+            var all = Failures.OrderByDescending(kv => kv.Value.Count).ThenBy(kv => kv.Key.Pair, StringComparer.Ordinal)
+                .ThenBy(kv => kv.Key.Precision, StringComparer.Ordinal).ThenBy(kv => kv.Key.Invariant, StringComparer.Ordinal)
+                .ThenBy(kv => kv.Key.Generator, StringComparer.Ordinal).ToList();
+            sb.AppendLine("| pair | precision | invariant | generator | failures | of cases | first case |");
+            sb.AppendLine("| --- | --- | --- | --- | --- | --- | --- |");
+            foreach (var kv in all.Take(rows))
+                sb.AppendLine($"| {kv.Key.Pair} | {kv.Key.Precision} | {kv.Key.Invariant} | {kv.Key.Generator} | {kv.Value.Count} | " +
+                              $"{CasesPerPair.GetValueOrDefault((kv.Key.Pair, kv.Key.Precision))} | {kv.Value.First.Case.Seed}:{kv.Value.First.Case.Index} |");
+            if (all.Count > rows) sb.AppendLine($"| … {all.Count - rows} more rows | | | | {all.Skip(rows).Sum(kv => kv.Value.Count)} | | |");
+            sb.AppendLine();
+            sb.AppendLine("Per invariant: " + string.Join(", ", all.GroupBy(r => r.Key.Invariant).OrderBy(g => g.Key)
+                .Select(g => $"{g.Key} {g.Sum(r => r.Value.Count)}")));
+            int shown = 0;
+            foreach (var kv in all)
+            {
+                if (shown++ >= repros) break;
+                sb.AppendLine();
+                sb.AppendLine($"---- repro {shown} ----");
+                sb.Append(kv.Value.First.Repro());
+            }
+            return sb.ToString();
+        }
+    }
+
+    /// <summary>
+    /// The differential fuzz: case i of seed s is drawn by <see cref="FuzzCase.Create"/> and checked by
+    /// <see cref="Checker.Run"/>; cases run in parallel chunks and the report does not depend on the thread count.
+    /// </summary>
+    public static class Engine
+    {
+        /// <summary>
+        /// The exact reference runs on one case in ExactEvery (it is rational arithmetic over BigInteger, and box pairs
+        /// enumerate hundreds of feature pairs): every case without a box, one in 8 with one box, one in 40 with two.
+        /// </summary>
+        public static int ExactEvery(FuzzCase c)
+        {
+            int boxes = (c.A.Kind >= Kind.Aabb ? 1 : 0) + (c.B.Kind >= Kind.Aabb ? 1 : 0);
+            return boxes == 0 ? 1 : boxes == 1 ? 8 : 40;
+        }
+
+        public static bool IsExact(FuzzCase c) => Rng.Mix((ulong)c.Seed * 31 + (ulong)c.Index) % (ulong)ExactEvery(c) == 0;
+
+        public static FuzzReport Run(FuzzOptions o)
+        {
+            var total = new FuzzReport { Seed = o.Seed, Start = o.Start };
+            var clock = Stopwatch.StartNew();
+            const int chunk = 60;
+            long chunks = (o.Count + chunk - 1) / chunk, next = -1, done = 0;
+            var gate = new object();
+            var lastProgress = clock.Elapsed;
+            var workers = Enumerable.Range(0, Math.Max(1, o.Threads)).Select(_ => Task.Factory.StartNew(() =>
+            {
+                var local = new FuzzReport { Seed = o.Seed, Start = o.Start };
+                while (true)
+                {
+                    long k = Interlocked.Increment(ref next);
+                    if (k >= chunks) break;
+                    long from = o.Start + k * chunk, to = Math.Min(o.Start + o.Count, from + chunk);
+                    for (long i = from; i < to; i++)
+                    {
+                        var c = FuzzCase.Create(o.Seed, i);
+                        bool exact = IsExact(c);
+                        List<Failure> fails;
+                        var ran = new HashSet<string>();
+                        try { fails = Checker.Run(c, exact, ran); }
+                        catch (Exception e) { throw new InvalidOperationException($"case {o.Seed}:{i} ({c.Pair} {c.PrecisionName}, {c.Generator}): {e.Message}", e); }
+                        local.Add(c, fails, exact, ran);
+                    }
+                    long d = Interlocked.Add(ref done, to - from);
+                    if (o.Progress != null && clock.Elapsed - lastProgress > o.ProgressEvery)
+                        lock (gate)
+                        {
+                            if (clock.Elapsed - lastProgress > o.ProgressEvery)
+                            {
+                                lastProgress = clock.Elapsed;
+                                double rate = d / clock.Elapsed.TotalSeconds;
+                                lock (total) o.Progress($"{d}/{o.Count} cases ({100.0 * d / o.Count:F1}%), {rate:F0} cases/s, " +
+                                    $"about {(o.Count - d) / Math.Max(rate, 1e-9):F0} s left; {total.FailedCases + local.FailedCases}+ failing cases so far");
+                            }
+                        }
+                }
+                lock (total) total.Merge(local);
+            }, TaskCreationOptions.LongRunning)).ToArray();
+            Task.WaitAll(workers);
+            total.Elapsed = clock.Elapsed;
+            return total;
+        }
+
+        /// <summary>Everything about one case: the shapes as C#, both results, and every failure with its repro.</summary>
+        public static string Replay(long seed, long index)
+        {
+            var c = FuzzCase.Create(seed, index);
+            var fails = Checker.Run(c, exact: true);
+            var sb = new StringBuilder();
+            sb.AppendLine($"case {seed}:{index}: {c.Pair} ({c.PrecisionName}), generator \"{c.Generator}\"");
+            sb.AppendLine($"var a = {c.A.ToCSharp()};");
+            sb.AppendLine($"var b = {c.B.ToCSharp()};");
+            sb.AppendLine(fails.Count == 0 ? "every invariant holds (exact reference included)" : $"{fails.Count} violations:");
+            foreach (var f in fails)
+            {
+                sb.AppendLine();
+                sb.Append(f.Repro());
+            }
+            return sb.ToString();
+        }
+    }
+}
