@@ -409,7 +409,7 @@ namespace ProximityReference.Fuzz
                 // A zero may be an underflowed value (DistanceSquared of a tiny distance): it only has to be consistent with
                 // the other side being below the normal range. Subnormal or overflowing values cannot scale exactly.
                 if (x == 0 && y != 0) { if (Normal(Math.ScaleB(y, -factor)) && Math.ScaleB(y, -factor) != 0) diffs.Add($"{name}: {N(y)} instead of 0"); return; }
-                if (y == 0 && x != 0) { if (Normal(want)) diffs.Add($"{name}: 0 instead of {N(want)}"); return; }
+                if (y == 0 && x != 0) { if (want != 0 && Normal(want)) diffs.Add($"{name}: 0 instead of {N(want)}"); return; }
                 if (!Normal(x) || !Normal(want)) return;
                 if (!Spec.Bits(want, y)) diffs.Add($"{name}: {N(y)} instead of {N(want)}");
             }

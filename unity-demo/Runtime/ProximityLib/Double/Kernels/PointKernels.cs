@@ -57,6 +57,13 @@ namespace ProximityLib.Double
         public static PointContact PointSegment(Vector3D p, Vector3D a, Vector3D b, out bool inRange)
         {
             var r = PointSegmentResidual(p, a, b, out double t);
+            if (t > 0 && t < 1)
+            {
+                // An interior projection's exact residual is perpendicular to the segment; what lies along it is rounding,
+                // which would otherwise set the push-out direction for a point (nearly) on the segment.
+                var d = b - a;
+                r -= d * (Vector3D.Dot(r, d) / d.LengthSquared);
+            }
             double r2 = r.LengthSquared, dist = Math.Sqrt(r2);
             inRange = Range.Length2(r, r2);
             var n = dist > 0 ? r / dist : AnyPerpendicular(b - a);
