@@ -160,12 +160,15 @@ foreach (var g in all.Where(m => m.Baseline != null).GroupBy(m => (m.Family, m.P
                   (boolean ? $"{g.Count(m => m.WrongOverlapDouble)} of {g.Count()}" : "–") + " |");
 }
 md.AppendLine();
-md.AppendLine("## Safe range");
+md.AppendLine("## Range");
 md.AppendLine();
 md.AppendLine("- Float API: every finite float input (the double internals square at most ~10⁷⁷).");
-md.AppendLine("- Double API: coordinate differences, lengths, radii and extents between 2⁻⁴⁸⁰ and 2⁴⁸⁰ (the `range-limits` family");
-md.AppendLine("  measures both ends); squared quantities would under- or overflow beyond about 2^±511. Inside the range, scaling a");
-md.AppendLine("  configuration by 2^k scales every result exactly (tested in `PairMatrixTests` and `FamilyTests`).");
+md.AppendLine("- Double API: the bounds above hold for configuration scales S from 2⁻¹⁰⁰⁰ to 2¹⁰⁰⁰ at any position (the");
+md.AppendLine("  `range-limits` family measures 2^±240 … 2^±1000, `mixed-scales` shapes 2⁴ … 2¹²⁰ apart in size). Shapes whose values");
+md.AppendLine("  all lie in [2⁻⁴⁰⁰, 2⁴⁰⁰] take the fast path; others are rescaled by an exact power of two, so scaling a configuration");
+md.AppendLine("  by 2^k scales every result exactly on either path (tested in `WideTests`, `PairMatrixTests`, `FamilyTests` and the");
+md.AppendLine("  fuzz). Beyond 2^±1000 answers stay finite where the true answer is representable (the fuzz checks every finite input).");
+md.AppendLine("- The SIMD batch queries (float lanes): configuration scales within 2^±28.");
 
 var worst = all.GroupBy(m => m.Pair).Select(g => g.OrderByDescending(Ed).First()).OrderByDescending(Ed);
 Console.Error.WriteLine("worst double case per query:");

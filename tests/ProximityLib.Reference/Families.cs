@@ -25,6 +25,7 @@ namespace ProximityReference
         {
             "random", "nearly-parallel", "parallel", "dot-perp", "tiny-segments", "far-along-line", "far-from-origin",
             "range-limits", "near-contact", "box-boundaries", "stacked-obbs", "obb-inputs", "crossing-lines", "tiny-against-long",
+            "parallel-shifted", "identical-rotations", "mixed-scales",
         };
 
         public static IEnumerable<Case> Get(string name, int count, int seed)
@@ -46,6 +47,9 @@ namespace ProximityReference
                 "obb-inputs" => ObbInputs(rng, count),
                 "crossing-lines" => CrossingLines(rng, count),
                 "tiny-against-long" => TinyAgainstLong(rng, count),
+                "parallel-shifted" => ParallelShifted(rng, count),
+                "identical-rotations" => IdenticalRotations(rng, count),
+                "mixed-scales" => MixedScales(rng, count),
                 _ => throw new ArgumentException(name),
             };
         }
@@ -312,10 +316,10 @@ namespace ProximityReference
                 }
         }
 
-        /// <summary>Random configurations scaled by 2^k toward both ends of the double range (within the safe range).</summary>
+        /// <summary>Every pair at scales 2^±240 … 2^±1000 (the whole double range; past 2^±400 the slow, rescaling path).</summary>
         private static IEnumerable<Case> RangeLimits(Random r, int count)
         {
-            foreach (int k in new[] { -480, -240, -120, 120, 240, 480 })
+            foreach (int k in new[] { -1000, -900, -720, -480, -240, 240, 480, 720, 900, 1000 })
                 for (int n = 0; n < count; n++)
                 {
                     double s = Math.Pow(2, k);
@@ -423,6 +427,84 @@ namespace ProximityReference
                 yield return new Case("stacked-obbs", a, b);
             }
         }
+
+        /// <summary>
+        /// Issue 10's family for nearly parallel 3D segments: unit length, angle 10^-k (k = 3..14), offset 0 or 1e-3 along
+        /// the common normal, the lines crossing inside both and each segment shifted along itself by up to half its
+        /// length, randomly oriented and placed (the existing nearly-parallel family never crosses inside both).
+        /// </summary>
+        private static IEnumerable<Case> ParallelShifted(Random r, int count)
+        {
+            for (int k = 3; k <= 14; k++)
+                foreach (double h in new[] { 0.0, 1e-3 })
+                    for (int n = 0; n < count; n++)
+                    {
+                        double theta = Math.Pow(10, -k);
+                        var m = Rotation(r);
+                        var c = V(r, 1);
+                        var da = Apply(m, new Vector3D(Math.Cos(theta / 2), Math.Sin(theta / 2), 0));
+                        var db = Apply(m, new Vector3D(Math.Cos(theta / 2), -Math.Sin(theta / 2), 0));
+                        var lift = Apply(m, new Vector3D(0, 0, h));
+                        double sa = U(r, -0.5, 0.5), sb = U(r, -0.5, 0.5);
+                        yield return new Case("parallel-shifted", new Segment3(c + da * (sa - 0.5), c + da * (sa + 0.5)),
+                            new Segment3(c + lift + db * (sb - 0.5), c + lift + db * (sb + 0.5)));
+                    }
+        }
+
+        /// <summary>
+        /// Issue 10's family for boxes with nearly identical rotations (quaternions 1e-6 … 1e-16 apart): full boxes edge
+        /// to edge diagonally with gaps and overlaps down to 1e-13 of their size, and crossing edge-like boxes (one
+        /// non-zero extent), where only an edge × edge axis of nearly parallel edges gives the depth.
+        /// </summary>
+        private static IEnumerable<Case> IdenticalRotations(Random r, int count)
+        {
+            foreach (double delta in new[] { 1e-6, 1e-9, 1e-12, 1e-16 })
+                for (int n = 0; n < count; n++)
+                {
+                    double x = Gauss(r), y = Gauss(r), z = Gauss(r), w = Gauss(r);
+                    double gap = Math.Pow(10, -r.Next(6, 14)) * (r.Next(2) == 0 ? 1 : -1);
+                    var ha = new Vector3D(U(r, 0.2, 1), U(r, 0.2, 1), U(r, 0.2, 1));
+                    var hb = new Vector3D(U(r, 0.2, 1), U(r, 0.2, 1), U(r, 0.2, 1));
+                    var a = Obb3.FromQuaternion(V(r, 1), x, y, z, w, ha);
+                    var diagonal = (a.AxisX + a.AxisY) * Math.Sqrt(0.5);
+                    var cb = a.Center + a.AxisX * (ha.X + hb.X) + a.AxisY * (ha.Y + hb.Y) + diagonal * gap;
+                    yield return new Case("identical-rotations", a, Obb3.FromQuaternion(cb, x + delta * Gauss(r), y + delta * Gauss(r), z, w, hb));
+                    // Two crossing "edges": boxes with only one non-zero extent, nearly parallel, through nearly one point.
+                    var e1 = Obb3.FromQuaternion(V(r, 1), x, y, z, w, new Vector3D(0, U(r, 0.2, 1), 0));
+                    var e2 = Obb3.FromQuaternion(e1.Center + e1.AxisX * gap, x + delta * Gauss(r), y, z + delta * Gauss(r), w, new Vector3D(0, U(r, 0.2, 1), 0));
+                    yield return new Case("identical-rotations", e1, e2);
+                }
+        }
+
+        /// <summary>Every pair with the two shapes at scales 2^4 … 2^120 apart, the small one at or inside the large one's boundary.</summary>
+        private static IEnumerable<Case> MixedScales(Random r, int count)
+        {
+            foreach (int k in new[] { 4, 20, 40, 60, 120 })
+                for (int n = 0; n < count; n++)
+                {
+                    int dim = n % 2 == 0 ? 3 : 2;
+                    string ka = Kinds[r.Next(Kinds.Length)], kb = Kinds[r.Next(Kinds.Length)];
+                    var big = Shape(r, ka, dim, V(r, 1.5));
+                    var near = PointNear(big, r);
+                    yield return new Case("mixed-scales", big, Shape(r, kb, dim, near, Math.Pow(2, -k)));
+                }
+        }
+
+        /// <summary>A point on or near a shape's boundary (a vertex, an end, a surface point), so a tiny shape there meets it.</summary>
+        private static Vector3D PointNear(object shape, Random r) => shape switch
+        {
+            Vector3D p => p,
+            Vector2D p => new Vector3D(p.X, p.Y, 0),
+            Segment3 x => x.PointAt(r.NextDouble()),
+            Segment2 x => new Vector3D(x.PointAt(r.NextDouble()).X, x.PointAt(r.NextDouble()).Y, 0),
+            Sphere x => x.Center + new Vector3D(x.Radius, 0, 0),
+            Circle x => new Vector3D(x.Center.X, x.Center.Y + x.Radius, 0),
+            Aabb3 x => x.Max,
+            Aabb2 x => new Vector3D(x.Max.X, x.Min.Y, 0),
+            Obb3 x => x.Center + x.AxisX * x.HalfExtents.X + x.AxisY * x.HalfExtents.Y,
+            Obb2 x => new Vector3D(x.Center.X, x.Center.Y, 0) + new Vector3D(x.AxisX.X, x.AxisX.Y, 0) * x.HalfExtents.X,
+            _ => throw new ArgumentException(shape.GetType().Name),
+        };
 
         /// <summary>OBBs from unnormalised quaternions and from slightly non-orthonormal float axes.</summary>
         private static IEnumerable<Case> ObbInputs(Random r, int count)

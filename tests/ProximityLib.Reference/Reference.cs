@@ -192,6 +192,8 @@ namespace ProximityReference
         /// <summary>E = |d − d*| / (u·S), in units of the precision's unit roundoff u at the configuration's scale.</summary>
         public static double Error(double d, Rational exact, double u, double scale)
         {
+            // A non-finite answer to a finite question (the paper's formulas overflow at 2^±1000) is infinitely wrong.
+            if (!double.IsFinite(d)) return double.PositiveInfinity;
             double diff = Math.Abs((Rational.FromDouble(d) - exact).ToDouble());
             if (diff == 0) return 0;
             return scale > 0 ? diff / (u * scale) : double.PositiveInfinity;

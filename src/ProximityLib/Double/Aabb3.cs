@@ -19,12 +19,8 @@ namespace ProximityLib.Double
             if (min.X > max.X || min.Y > max.Y || min.Z > max.Z)
                 throw new ArgumentException($"min {min} must not exceed max {max} on any axis.", nameof(min));
             Min = min; Max = max;
-            _extreme = !(Range.Moderate(min) && Range.Moderate(max));
         }
 
-        private readonly bool _extreme;
-        /// <summary>Whether a value lies outside the fast path's range (<see cref="Range"/>).</summary>
-        internal bool Extreme => _extreme;
 
         void IScalable<Aabb3>.Measure(ref Rescale s) { s.Point(Min); s.Point(Max); }
         Aabb3 IScalable<Aabb3>.Rescaled(in Rescale s) => new Aabb3(s.Apply(Min), s.Apply(Max));
@@ -89,12 +85,8 @@ namespace ProximityLib.Double
             if (min.X > max.X || min.Y > max.Y)
                 throw new ArgumentException($"min {min} must not exceed max {max} on any axis.", nameof(min));
             Min = min; Max = max;
-            _extreme = !(Range.Moderate(min) && Range.Moderate(max));
         }
 
-        private readonly bool _extreme;
-        /// <summary>Whether a value lies outside the fast path's range (<see cref="Range"/>).</summary>
-        internal bool Extreme => _extreme;
 
         void IScalable<Aabb2>.Measure(ref Rescale s) { s.Point(Min); s.Point(Max); }
         Aabb2 IScalable<Aabb2>.Rescaled(in Rescale s) => new Aabb2(s.Apply(Min), s.Apply(Max));

@@ -16,6 +16,8 @@ namespace ProximityLib.Double
         private readonly Vector3D _x, _y, _z;
         // default(Obb3) must be valid: without this flag its axes would be zero.
         private readonly bool _hasAxes;
+        // Beside the other flag, so the struct does not grow: some stored value is outside the fast path's range.
+        private readonly bool _extreme;
 
         /// <summary>The center.</summary>
         public readonly Vector3D Center;
@@ -66,7 +68,6 @@ namespace ProximityLib.Double
             _extreme = !(Range.Moderate(center) && Range.Moderate(halfExtents));
         }
 
-        private readonly bool _extreme;
         /// <summary>Whether a value lies outside the fast path's range (<see cref="Range"/>).</summary>
         internal bool Extreme => _extreme;
 

@@ -15,12 +15,8 @@ namespace ProximityLib.Double
             Num.Finite(start, nameof(start));
             Num.Finite(end, nameof(end));
             Start = start; End = end;
-            _extreme = !(Range.Moderate(start) && Range.Moderate(end));
         }
 
-        private readonly bool _extreme;
-        /// <summary>Whether a value lies outside the fast path's range (<see cref="Range"/>).</summary>
-        internal bool Extreme => _extreme;
 
         void IScalable<Segment3>.Measure(ref Rescale s) { s.Point(Start); s.Point(End); }
         Segment3 IScalable<Segment3>.Rescaled(in Rescale s) => new Segment3(s.Apply(Start), s.Apply(End));
@@ -64,12 +60,8 @@ namespace ProximityLib.Double
             Num.Finite(start, nameof(start));
             Num.Finite(end, nameof(end));
             Start = start; End = end;
-            _extreme = !(Range.Moderate(start) && Range.Moderate(end));
         }
 
-        private readonly bool _extreme;
-        /// <summary>Whether a value lies outside the fast path's range (<see cref="Range"/>).</summary>
-        internal bool Extreme => _extreme;
 
         void IScalable<Segment2>.Measure(ref Rescale s) { s.Point(Start); s.Point(End); }
         Segment2 IScalable<Segment2>.Rescaled(in Rescale s) => new Segment2(s.Apply(Start), s.Apply(End));

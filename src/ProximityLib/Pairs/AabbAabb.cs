@@ -8,21 +8,27 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between an AABB and an AABB (3D): negative when overlapping (least per-axis overlap); shared intervals put the witnesses at their middle. Algorithm: per-axis interval gaps (paper Eq. 18).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, Aabb3 b) =>
-            a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
+        public static DistanceResult3 Between(Aabb3 a, Aabb3 b)
+        {
+            var r = Core(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b);
+        }
         /// <summary>Closest distance between an AABB and an AABB (2D): negative when overlapping (least per-axis overlap); shared intervals put the witnesses at their middle. Algorithm: per-axis interval gaps (paper Eq. 18).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, Aabb2 b) =>
-            a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
+        public static DistanceResult2 Between(Aabb2 a, Aabb2 b)
+        {
+            var r = Core(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b);
+        }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult3 Core(Aabb3 a, Aabb3 b) => Kernels.AabbAabb(a.Min, a.Max, b.Min, b.Max, false);
+        internal static DistanceResult3 Core(Aabb3 a, Aabb3 b, out bool inRange) => Kernels.AabbAabb(a.Min, a.Max, b.Min, b.Max, false, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult2 Core(Aabb2 a, Aabb2 b) => Kernels.AabbAabb(a.Min.To3(), a.Max.To3(), b.Min.To3(), b.Max.To3(), true).To2();
+        internal static DistanceResult2 Core(Aabb2 a, Aabb2 b, out bool inRange) => Kernels.AabbAabb(a.Min.To3(), a.Max.To3(), b.Min.To3(), b.Max.To3(), true, out inRange).To2();
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Aabb3 a, Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y));
+        private static DistanceResult3 Slow(Aabb3 a, Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Aabb2 a, Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y));
+        private static DistanceResult2 Slow(Aabb2 a, Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
@@ -47,10 +53,10 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between an AABB and an AABB (3D), computed in double: negative when overlapping (least per-axis overlap); shared intervals put the witnesses at their middle.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
+        public static DistanceResult3 Between(Aabb3 a, Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an AABB and an AABB (2D), computed in double: negative when overlapping (least per-axis overlap); shared intervals put the witnesses at their middle.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
+        public static DistanceResult2 Between(Aabb2 a, Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
     }
 
     public static partial class ProximityQuery

@@ -11,7 +11,7 @@ namespace ProximityLib.Double
         public static DistanceResult3 Between(Vector3D a, Segment3 b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange && !b.Extreme ? r : Slow(a, b);
+            return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a segment and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -21,7 +21,7 @@ namespace ProximityLib.Double
         public static DistanceResult2 Between(Vector2D a, Segment2 b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange && !b.Extreme ? r : Slow(a, b);
+            return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a segment and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -41,27 +41,33 @@ namespace ProximityLib.Double
     {
         /// <summary>Whether a point and a segment (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3D a, Segment3 b) =>
-            b.Extreme ? Slow(a, b) : Core(a, b);
+        public static bool Overlaps(Vector3D a, Segment3 b)
+        {
+            var r = Core(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b);
+        }
         /// <summary>Whether a segment and a point (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Segment3 a, Vector3D b) => Overlaps(b, a);
         /// <summary>Whether a point and a segment (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2D a, Segment2 b) =>
-            b.Extreme ? Slow(a, b) : Core(a, b);
+        public static bool Overlaps(Vector2D a, Segment2 b)
+        {
+            var r = Core(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b);
+        }
         /// <summary>Whether a segment and a point (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Segment2 a, Vector2D b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Vector3D a, Segment3 b) => Kernels.PointSegmentResidual(a, b.Start, b.End, out _) == default;
+        internal static bool Core(Vector3D a, Segment3 b, out bool inRange) => Kernels.PointOnSegment(a, b.Start, b.End, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Vector2D a, Segment2 b) => Kernels.PointSegmentResidual(a.To3(), b.Start.To3(), b.End.To3(), out _) == default;
+        internal static bool Core(Vector2D a, Segment2 b, out bool inRange) => Kernels.PointOnSegment(a.To3(), b.Start.To3(), b.End.To3(), out inRange);
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Vector3D a, Segment3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y));
+        private static bool Slow(Vector3D a, Segment3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Vector2D a, Segment2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y));
+        private static bool Slow(Vector2D a, Segment2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 
@@ -87,13 +93,13 @@ namespace ProximityLib
     {
         /// <summary>Whether a point and a segment (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3 a, Segment3 b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner);
+        public static bool Overlaps(Vector3 a, Segment3 b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner, out _);
         /// <summary>Whether a segment and a point (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Segment3 a, Vector3 b) => Overlaps(b, a);
         /// <summary>Whether a point and a segment (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2 a, Segment2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner);
+        public static bool Overlaps(Vector2 a, Segment2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner, out _);
         /// <summary>Whether a segment and a point (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Segment2 a, Vector2 b) => Overlaps(b, a);

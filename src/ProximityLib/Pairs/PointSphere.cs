@@ -11,7 +11,7 @@ namespace ProximityLib.Double
         public static DistanceResult3 Between(Vector3D a, Sphere b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange && !b.Extreme ? r : Slow(a, b);
+            return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a sphere and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -21,7 +21,7 @@ namespace ProximityLib.Double
         public static DistanceResult2 Between(Vector2D a, Circle b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange && !b.Extreme ? r : Slow(a, b);
+            return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a circle and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -44,7 +44,7 @@ namespace ProximityLib.Double
         public static bool Overlaps(Vector3D a, Sphere b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange && !b.Extreme ? r : Slow(a, b);
+            return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a sphere and a point (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -54,7 +54,7 @@ namespace ProximityLib.Double
         public static bool Overlaps(Vector2D a, Circle b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange && !b.Extreme ? r : Slow(a, b);
+            return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a circle and a point (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -227,13 +227,15 @@ namespace ProximityReference.Fuzz
         }
 
         /// <summary>
-        /// Configurations whose size sits near the edges of the documented safe ranges — the double API's 2^±480 and the
-        /// SIMD batch API's 2^±28 (float) — with a large and a small shape (ratio up to 2^24) at the large one's
-        /// boundary, where squares of the small sizes leave the range first.
+        /// Configurations whose size sits near the edges of the documented ranges — the double API's fast path (2^±400)
+        /// and promise (2^±1000), the SIMD batch API's 2^±28 (float) — with a large and a small shape (ratio up to 2^24)
+        /// at the large one's boundary, where squares of the small sizes leave the range first.
         /// </summary>
         private static (Spec, Spec) RangeEdges(Rng r, Kind ka, Kind kb, int dim, Precision p)
         {
-            int edge = p.Float ? 28 : 480;
+            // Double: the fast path's edge (values at 2^±400, src/ProximityLib/Double/Wide.cs) and the end of the promised
+            // range (2^±1000); float: the batch's 2^±28.
+            int edge = p.Float ? 28 : (r.Chance(0.5) ? 400 : 1000);
             double e = r.Chance(0.25) ? r.Range(-edge, edge) : r.Sign() * (edge - r.Range(-2, 8));
             double big = Math.Pow(2, e);
             double small = big * r.Pow2(-24, 0);

@@ -16,8 +16,9 @@ namespace ProximityLib.Double
         /// cannot win and is skipped. Overlapping: A moved by the minimum translation just touches B, and the
         /// touching pair found the same way, moved back, realises the penetration.
         /// </summary>
-        public static DistanceResult3 BoxBox(in Box boxA, in Box boxB)
+        public static DistanceResult3 BoxBox(in Box boxA, in Box boxB, out bool inRange)
         {
+            inRange = Range.Box(Size(boxA, boxB));
             var shift = boxA.Origin;
             var a = boxA.Translated(-shift);
             var b = boxB.Translated(-shift);
@@ -26,6 +27,8 @@ namespace ProximityLib.Double
             if (!BoxBoxOverlaps(a, b))
             {
                 double gap = EdgesApart(a, b, out onA, out onB);
+                // A subnormal squared gap has lost bits: the slow path answers it at a scale where it has not.
+                inRange &= gap == 0 || Range.In(gap);
                 return new DistanceResult3(Math.Sqrt(gap), gap, onA + shift, onB + shift, 0, 0);
             }
             var ca = a.Origin + a.ToWorldOffset(a.LocalCenter);
@@ -54,7 +57,11 @@ namespace ProximityLib.Double
             double g = EdgesApart(moved, b, out onA, out onB);
             onA = onA - push + shift;
             onB += shift;
-            if (depth < 0) return new DistanceResult3(Math.Sqrt(g), g, onA, onB, 0, 0);
+            if (depth < 0)
+            {
+                inRange &= g == 0 || Range.In(g);
+                return new DistanceResult3(Math.Sqrt(g), g, onA, onB, 0, 0);
+            }
             return new DistanceResult3(-depth, 0, onA, onB, 0, 0);
         }
 
@@ -144,6 +151,22 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
+        /// The largest magnitude among the boxes' relative position and extents: within [2^-450, 2^450] (or 0) the box
+        /// kernels' products stay far from underflow and overflow (see <see cref="Range"/>).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Size(in Box a, in Box b) =>
+            Math.Max(Range.MaxAbs(b.Origin - a.Origin), Math.Max(Range.MaxAbs(a.Hi - a.Lo), Range.MaxAbs(b.Hi - b.Lo)));
+
+        /// <summary><see cref="BoxBoxOverlaps(in Box, in Box)"/>, with whether the boxes' magnitudes allow the fast path.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool BoxBoxOverlaps(in Box a, in Box b, out bool inRange)
+        {
+            inRange = Range.Box(Size(a, b));
+            return BoxBoxOverlaps(a, b);
+        }
+
+        /// <summary>
         /// Box–box overlap by the separating-axis test with early outs and no square roots (Gottschalk et al. 1996;
         /// Ericson, RTCD §4.4.1), in A's frame. Cross axes are projected honestly instead of with the usual ε added to |R|,
         /// so nearly parallel edges neither invent a separation nor need a scale-dependent fudge. 2D uses the four face axes.
@@ -157,7 +180,7 @@ namespace ProximityLib.Double
             return BoxBoxOverlapsScalar(a, b);
         }
 
-        /// <summary>The scalar form of <see cref="BoxBoxOverlaps"/>: the only one on netstandard2.1 (Unity) and for planar boxes.</summary>
+        /// <summary>The scalar form of <see cref="BoxBoxOverlaps(in Box, in Box)"/>: the only one on netstandard2.1 (Unity) and for planar boxes.</summary>
         internal static bool BoxBoxOverlapsScalar(in Box a, in Box b)
         {
             var tw = (b.Origin - a.Origin) + b.ToWorldOffset(b.LocalCenter) - a.ToWorldOffset(a.LocalCenter);
@@ -206,7 +229,11 @@ namespace ProximityLib.Double
         /// AABB against AABB, per axis and exact up to one subtraction per gap. Apart: the per-axis gaps; overlapping axes
         /// put both witnesses at the middle of the shared interval. Overlapping: the axis of least overlap.
         /// </summary>
-        public static DistanceResult3 AabbAabb(Vector3D minA, Vector3D maxA, Vector3D minB, Vector3D maxB, bool planar)
+        /// <remarks>
+        /// <paramref name="inRange"/>: apart, the squared gap lies in the fast range; overlapping, no axis had a positive gap
+        /// whose square underflowed (the depths are differences, exact at any magnitude).
+        /// </remarks>
+        public static DistanceResult3 AabbAabb(Vector3D minA, Vector3D maxA, Vector3D minB, Vector3D maxB, bool planar, out bool inRange)
         {
             var x = new AxisGap(minA.X, maxA.X, minB.X, maxB.X);
             var y = new AxisGap(minA.Y, maxA.Y, minB.Y, maxB.Y);
@@ -214,7 +241,11 @@ namespace ProximityLib.Double
             double g2 = x.Gap2 + y.Gap2 + z.Gap2;
             var pa = new Vector3D(x.A, y.A, z.A);
             var pb = new Vector3D(x.B, y.B, z.B);
-            if (g2 > 0) return new DistanceResult3(Math.Sqrt(g2), g2, pa, pb, 0, 0);
+            if (g2 > 0)
+            {
+                inRange = Range.In(g2);
+                return new DistanceResult3(Math.Sqrt(g2), g2, pa, pb, 0, 0);
+            }
 
             // Overlapping on every axis: push A out along the axis of least overlap (x before y before z on ties), down or
             // up, whichever is shorter. Swapping the boxes swaps each axis's two push-outs, so a tie between them is
@@ -226,6 +257,7 @@ namespace ProximityLib.Double
             var g = axis == 0 ? x : (axis == 1 ? y : z);
             bool down = g.Down < g.Up || (g.Down == g.Up && Order.Before(minA, maxA, minB, maxB));
             int face = 2 * axis + (down ? 0 : 1);
+            inRange = depth >= 0;
             // Moving A down along the axis by `depth` puts its max face on B's min face, and vice versa.
             switch (face)
             {
@@ -254,10 +286,10 @@ namespace ProximityLib.Double
                 else if (below > 0) { Gap2 = below * below; A = aLo; B = bHi; }
                 else
                 {
-                    // Shared interval: both witnesses at its middle.
+                    // Shared interval: both witnesses at its middle (halves first: hi − lo can overflow).
                     double lo = Math.Max(aLo, bLo), hi = Math.Min(aHi, bHi);
                     Gap2 = 0;
-                    A = B = lo + 0.5 * (hi - lo);
+                    A = B = 0.5 * lo + 0.5 * hi;
                 }
             }
         }

@@ -36,11 +36,16 @@ namespace ProximityLib.Double
         /// to a segment"; not the paper's Eq. 10, whose |w|² − (w·v)²/|v|² cancels catastrophically).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static Vector3D PointSegmentResidual(Vector3D p, Vector3D a, Vector3D b, out double t)
+        public static Vector3D PointSegmentResidual(Vector3D p, Vector3D a, Vector3D b, out double t) => PointSegmentResidual(p, a, b, out t, out _);
+
+        /// <summary><see cref="PointSegmentResidual(Vector3D, Vector3D, Vector3D, out double)"/>, also giving dd = |b − a|².</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Vector3D PointSegmentResidual(Vector3D p, Vector3D a, Vector3D b, out double t, out double dd)
         {
             var d = b - a;
             var w = p - a;
-            double dd = d.LengthSquared, wd = Vector3D.Dot(w, d);
+            dd = d.LengthSquared;
+            double wd = Vector3D.Dot(w, d);
             if (wd <= 0 || dd == 0) { t = 0; return w; }
             if (wd >= dd) { t = 1; return p - b; }
             t = wd / dd;
@@ -51,21 +56,50 @@ namespace ProximityLib.Double
         public static Vector3D SegmentPoint(Vector3D a, Vector3D b, double t) =>
             t <= 0.5 ? a + (b - a) * t : b - (b - a) * (1 - t);
 
-        /// <summary>Point against segment; <paramref name="inRange"/> tells whether the squared gap could be trusted (see <see cref="Range"/>).</summary>
+        /// <summary>
+        /// Point against segment. <paramref name="inRange"/>: the squared gap and the segment's squared length lie in the
+        /// fast range (or are exactly 0: the point on the segment, the segment a point, a == b; a squared length that
+        /// underflowed to 0 is not), see <see cref="Range"/>.
+        /// </summary>
         public static PointContact PointSegment(Vector3D p, Vector3D a, Vector3D b, out bool inRange)
         {
-            var r = PointSegmentResidual(p, a, b, out double t);
-            if (t > 0 && t < 1)
+            var r = PointSegmentResidual(p, a, b, out double t, out double dd);
+            double r2 = r.LengthSquared;
+            if (t > 0 && t < 1 && r2 < dd * 8.673617379884035e-19)
             {
-                // An interior projection's exact residual is perpendicular to the segment; what lies along it is rounding,
-                // which would otherwise set the push-out direction for a point (nearly) on the segment.
+                // A point within 2^-30 of the segment's length from it: the exact residual of an interior projection is
+                // perpendicular to the segment, and what lies along it is rounding, which would otherwise set the push-out
+                // direction for a point (nearly) on the segment.
                 var d = b - a;
-                r -= d * (Vector3D.Dot(r, d) / d.LengthSquared);
+                r -= d * (Vector3D.Dot(r, d) / dd);
+                r2 = r.LengthSquared;
             }
-            double r2 = r.LengthSquared, dist = Math.Sqrt(r2);
-            inRange = Range.Length2(r, r2);
+            double dist = Math.Sqrt(r2);
+            inRange = Range.Length2(r, r2) && (Range.In(dd) || a == b);
             var n = dist > 0 ? r / dist : AnyPerpendicular(b - a);
             return new PointContact(dist, r2, SegmentPoint(a, b, t), n, t);
+        }
+
+        /// <summary>
+        /// Whether p lies on the closed segment [a, b]: the residual is exactly zero. <paramref name="inRange"/>: the
+        /// segment's squared length lies in the fast range, or it is a point (then the test is p == a, exact).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool PointOnSegment(Vector3D p, Vector3D a, Vector3D b, out bool inRange)
+        {
+            var r = PointSegmentResidual(p, a, b, out _, out double dd);
+            inRange = Range.In(dd) || a == b;
+            return r == default;
+        }
+
+        /// <summary>Whether segment [a, b] meets the closed sphere (center, radius); <paramref name="inRange"/> as for <see cref="PointSegment"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool SegmentInSphere(Vector3D a, Vector3D b, Vector3D center, double radius, out bool inRange)
+        {
+            var r = PointSegmentResidual(center, a, b, out _, out double dd);
+            double r2 = r.LengthSquared;
+            inRange = Range.Length2(r, r2) && (Range.In(dd) || a == b);
+            return r2 <= radius * radius;
         }
 
         /// <summary>A unit vector perpendicular to d, in the z = 0 plane whenever d is (so the 2D API stays planar); +X for d = 0.</summary>
@@ -227,12 +261,14 @@ namespace ProximityLib.Double
         /// along −X, whichever argument it is.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 SphereSphere(Vector3D ca, double ra, Vector3D cb, double rb)
+        public static DistanceResult3 SphereSphere(Vector3D ca, double ra, Vector3D cb, double rb, out bool inRange)
         {
             var d = cb - ca;
-            double len = d.Length;
+            double d2 = d.LengthSquared, len = Math.Sqrt(d2);
             var n = len > 0 ? d * (1 / len) : (Order.Before(ca, ra, cb, rb) ? -Vector3D.UnitX : Vector3D.UnitX);
-            double dist = len - (ra + rb);
+            double r = ra + rb, dist = len - r;
+            // The radii's sum is the only other quantity that could overflow while the answer is finite.
+            inRange = Range.Length2(d, d2) && r <= double.MaxValue;
             // + 0 turns −0 into 0: where ca and cb agree in a coordinate, n is +0 in both orders, not ∓0.
             var zero = default(Vector3D);
             return new DistanceResult3(dist, dist > 0 ? dist * dist : 0, ca + n * ra + zero, cb - n * rb + zero, 0, 0);
@@ -243,25 +279,36 @@ namespace ProximityLib.Double
         public static bool PointInAabb(Vector3D p, Vector3D min, Vector3D max) =>
             p.X >= min.X && p.X <= max.X && p.Y >= min.Y && p.Y <= max.Y && p.Z >= min.Z && p.Z <= max.Z;
 
-        /// <summary>Squared distance from p to the closed axis-aligned box (Arvo's test without the square root).</summary>
+        /// <summary>
+        /// Squared distance from p to the closed axis-aligned box (Arvo's test without the square root).
+        /// <paramref name="inRange"/>: the squared gap lies in the fast range, or p is inside (every gap exactly 0).
+        /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double PointAabbDistanceSquared(Vector3D p, Vector3D min, Vector3D max)
+        public static double PointAabbDistanceSquared(Vector3D p, Vector3D min, Vector3D max, out bool inRange)
         {
             double dx = p.X - Num.Clamp(p.X, min.X, max.X);
             double dy = p.Y - Num.Clamp(p.Y, min.Y, max.Y);
             double dz = p.Z - Num.Clamp(p.Z, min.Z, max.Z);
-            return dx * dx + dy * dy + dz * dz;
+            double d2 = dx * dx + dy * dy + dz * dz;
+            inRange = Range.In(d2) || (dx == 0 && dy == 0 && dz == 0);
+            return d2;
         }
 
-        /// <summary>Squared distance from p to the closed box (Arvo's test without the square root).</summary>
+        /// <summary>
+        /// Squared distance from p to the closed box (Arvo's test without the square root). <paramref name="inRange"/>:
+        /// the squared gap lies in the fast range, or p is inside (every gap exactly 0) and the box is not a point (whose
+        /// frame could swallow a subnormal offset) or p is its centre.
+        /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double PointBoxDistanceSquared(Vector3D p, in Box box)
+        public static double PointBoxDistanceSquared(Vector3D p, in Box box, out bool inRange)
         {
             var q = box.ToLocal(p - box.Origin);
             double dx = q.X - Num.Clamp(q.X, box.Lo.X, box.Hi.X);
             double dy = q.Y - Num.Clamp(q.Y, box.Lo.Y, box.Hi.Y);
             double dz = q.Z - Num.Clamp(q.Z, box.Lo.Z, box.Hi.Z);
-            return dx * dx + dy * dy + dz * dz;
+            double d2 = dx * dx + dy * dy + dz * dz;
+            inRange = Range.In(d2) || (dx == 0 && dy == 0 && dz == 0 && (box.Lo != box.Hi || p == box.Origin));
+            return d2;
         }
     }
 

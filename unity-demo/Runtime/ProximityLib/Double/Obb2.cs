@@ -14,6 +14,8 @@ namespace ProximityLib.Double
         private readonly double _cos, _sin;
         // default(Obb2) must be valid: without this flag its axis would be zero.
         private readonly bool _hasAxis;
+        // Beside the other flag, so the struct does not grow: some stored value is outside the fast path's range.
+        private readonly bool _extreme;
 
         /// <summary>The center.</summary>
         public readonly Vector2D Center;
@@ -54,7 +56,6 @@ namespace ProximityLib.Double
             _extreme = !(Range.Moderate(center) && Range.Moderate(halfExtents));
         }
 
-        private readonly bool _extreme;
         /// <summary>Whether a value lies outside the fast path's range (<see cref="Range"/>).</summary>
         internal bool Extreme => _extreme;
 

@@ -17,12 +17,8 @@ namespace ProximityLib.Double
             Num.Finite(center, nameof(center));
             Num.NonNegative(radius, nameof(radius));
             Center = center; Radius = radius;
-            _extreme = !(Range.Moderate(center) && Range.Moderate(radius));
         }
 
-        private readonly bool _extreme;
-        /// <summary>Whether a value lies outside the fast path's range (<see cref="Range"/>).</summary>
-        internal bool Extreme => _extreme;
 
         void IScalable<Sphere>.Measure(ref Rescale s) { s.Point(Center); s.Length(Radius); }
         Sphere IScalable<Sphere>.Rescaled(in Rescale s) => new Sphere(s.Apply(Center), s.Apply(Radius));
@@ -60,12 +56,8 @@ namespace ProximityLib.Double
             Num.Finite(center, nameof(center));
             Num.NonNegative(radius, nameof(radius));
             Center = center; Radius = radius;
-            _extreme = !(Range.Moderate(center) && Range.Moderate(radius));
         }
 
-        private readonly bool _extreme;
-        /// <summary>Whether a value lies outside the fast path's range (<see cref="Range"/>).</summary>
-        internal bool Extreme => _extreme;
 
         void IScalable<Circle>.Measure(ref Rescale s) { s.Point(Center); s.Length(Radius); }
         Circle IScalable<Circle>.Rescaled(in Rescale s) => new Circle(s.Apply(Center), s.Apply(Radius));

@@ -6,21 +6,27 @@ using System.Runtime.CompilerServices;
 namespace ProximityLib.Double
 {
     /// <summary>
-    /// The fast path's range. A shape is <em>moderate</em> when every stored value (coordinates, radius, extents) is 0
-    /// or has a magnitude in [2^-400, 2^400]. Between moderate values every non-zero difference lies in [2^-452, 2^401]
-    /// (2^-452 is one ulp of 2^-400), so the squares and products the kernels form stay normal doubles, and whatever
-    /// underflows is far below the configuration's rounding: two moderate shapes need no further guard. Shapes record
-    /// at construction whether they are moderate. A point carries no flag, so a point pair checks the squared
-    /// distance it forms instead (<see cref="Length2"/>). Everything else takes the slow path, <see cref="Wide"/>.
+    /// The fast path's range. Every kernel reports whether its answer can be trusted, from quantities it forms anyway:
+    /// a squared length of the configuration (the squared gap, the segment's squared length, the sum of squared sizes)
+    /// in [2^-960, 2^960] leaves every square and product far from underflow and overflow and puts whatever underflows
+    /// far below the configuration's rounding; the box kernels check the largest magnitude of their relative
+    /// coordinates and extents in [2^-450, 2^450] the same way. An OBB also records at construction whether every stored
+    /// value is 0 or within [2^-400, 2^400] (the flag sits beside another, so the struct does not grow): between such
+    /// values every non-zero difference lies in [2^-452, 2^401]. What fails a check takes the slow path,
+    /// <see cref="Wide"/>. Each check is one or two predictable comparisons.
     /// </summary>
     internal static class Range
     {
-        /// <summary>2^-400 and 2^400: the moderate magnitudes.</summary>
+        /// <summary>2^-400 and 2^400: the moderate magnitudes of an OBB's stored values.</summary>
         public const double Min = 3.8725919148493183e-121, Max = 2.5822498780869086e+120;
         /// <summary>2^-960 and 2^960: squared lengths in between are far from underflow and overflow.</summary>
         public const double Lo2 = 1.0261342003245941e-289, Hi2 = 9.7453140114e+288;
         /// <summary>2^-480: a length at least this large keeps its rounding far above the subnormal range.</summary>
         public const double Lo = 3.2033329522929615e-145;
+        /// <summary>2^-450 and 2^450: the box kernels' relative magnitudes.</summary>
+        public const double BoxMin = 3.4395525670743494e-136, BoxMax = 2.9073548971824276e+135;
+
+        private const long Lo2Bits = (1023L - 960) << 52, Span2Bits = 1920L << 52;
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Moderate(double x)
@@ -32,12 +38,23 @@ namespace ProximityLib.Double
         public static bool Moderate(Vector3D v) => Moderate(v.X) && Moderate(v.Y) && Moderate(v.Z);
         public static bool Moderate(Vector2D v) => Moderate(v.X) && Moderate(v.Y);
 
+        /// <summary>Whether a squared length x2 (≥ 0) lies in [2^-960, 2^960]: one subtraction and one unsigned compare; NaN and ∞ fail.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool In(double x2) => (ulong)(BitConverter.DoubleToInt64Bits(x2) - Lo2Bits) <= (ulong)Span2Bits;
+
         /// <summary>
-        /// Whether a squared length v2 = |v|² formed by a point pair can be trusted: in [2^-960, 2^960], or exactly 0
-        /// because v is. NaN (an overflowed difference) fails.
+        /// Whether a squared length v2 = |v|² can be trusted: in [2^-960, 2^960], or exactly 0 because v is. NaN (an
+        /// overflowed difference) fails.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Length2(Vector3D v, double v2) => v2 <= Hi2 && (v2 >= Lo2 || (v.X == 0 && v.Y == 0 && v.Z == 0));
+        public static bool Length2(Vector3D v, double v2) => In(v2) || (v.X == 0 && v.Y == 0 && v.Z == 0);
+
+        /// <summary>Whether the largest relative magnitude m of a box kernel lies in [2^-450, 2^450] or is 0 (everything coincides).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool Box(double m) => (m >= BoxMin && m <= BoxMax) || m == 0;
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double MaxAbs(Vector3D v) => Math.Max(Math.Abs(v.X), Math.Max(Math.Abs(v.Y), Math.Abs(v.Z)));
     }
 
     /// <summary>A shape that the slow path can measure and rescale by a power of two.</summary>

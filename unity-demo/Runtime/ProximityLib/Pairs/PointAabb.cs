@@ -13,7 +13,7 @@ namespace ProximityLib.Double
         public static DistanceResult3 Between(Vector3D a, Aabb3 b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange && !b.Extreme ? r : Slow(a, b);
+            return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an AABB and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -23,7 +23,7 @@ namespace ProximityLib.Double
         public static DistanceResult2 Between(Vector2D a, Aabb2 b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange && !b.Extreme ? r : Slow(a, b);
+            return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an AABB and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

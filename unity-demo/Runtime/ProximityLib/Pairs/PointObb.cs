@@ -43,15 +43,13 @@ namespace ProximityLib.Double
     {
         /// <summary>Whether a point and an OBB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3D a, Obb3 b) =>
-            b.Extreme ? Slow(a, b) : Core(a, b);
+        public static bool Overlaps(Vector3D a, Obb3 b) => b.Extreme ? Slow(a, b) : Core(a, b);
         /// <summary>Whether an OBB and a point (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Obb3 a, Vector3D b) => Overlaps(b, a);
         /// <summary>Whether a point and an OBB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2D a, Obb2 b) =>
-            b.Extreme ? Slow(a, b) : Core(a, b);
+        public static bool Overlaps(Vector2D a, Obb2 b) => b.Extreme ? Slow(a, b) : Core(a, b);
         /// <summary>Whether an OBB and a point (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Obb2 a, Vector2D b) => Overlaps(b, a);

@@ -13,7 +13,7 @@ namespace ProximityLib.Double
         public static DistanceResult3 Between(Vector3D a, Sphere b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange && !b.Extreme ? r : Slow(a, b);
+            return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a sphere and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -23,7 +23,7 @@ namespace ProximityLib.Double
         public static DistanceResult2 Between(Vector2D a, Circle b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange && !b.Extreme ? r : Slow(a, b);
+            return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a circle and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -46,7 +46,7 @@ namespace ProximityLib.Double
         public static bool Overlaps(Vector3D a, Sphere b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange && !b.Extreme ? r : Slow(a, b);
+            return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a sphere and a point (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -56,7 +56,7 @@ namespace ProximityLib.Double
         public static bool Overlaps(Vector2D a, Circle b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange && !b.Extreme ? r : Slow(a, b);
+            return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a circle and a point (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -10,54 +10,66 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a sphere and an OBB (3D): negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside). Algorithm: point–box from the center in the box frame, less the radius; overlap by Arvo's squared test.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Obb3 b) =>
-            a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
+        public static DistanceResult3 Between(Sphere a, Obb3 b)
+        {
+            var r = Core(a, b, out bool inRange);
+            return inRange && !b.Extreme ? r : Slow(a, b);
+        }
         /// <summary>Closest distance between an OBB and a sphere (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Obb3 a, Sphere b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a circle and an OBB (2D): negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside). Algorithm: point–box from the center in the box frame, less the radius; overlap by Arvo's squared test.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Obb2 b) =>
-            a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
+        public static DistanceResult2 Between(Circle a, Obb2 b)
+        {
+            var r = Core(a, b, out bool inRange);
+            return inRange && !b.Extreme ? r : Slow(a, b);
+        }
         /// <summary>Closest distance between an OBB and a circle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Obb2 a, Circle b) => Between(b, a).Swapped();
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult3 Core(Sphere a, Obb3 b) => Kernels.PointBox(a.Center, b.ToBox(), out _).AsSphereFirst(a.Center, a.Radius);
+        internal static DistanceResult3 Core(Sphere a, Obb3 b, out bool inRange) => Kernels.PointBox(a.Center, b.ToBox(), out inRange).AsSphereFirst(a.Center, a.Radius);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult2 Core(Circle a, Obb2 b) => Kernels.PointBox(a.Center.To3(), b.ToBox(), out _).AsSphereFirst(a.Center.To3(), a.Radius).To2();
+        internal static DistanceResult2 Core(Circle a, Obb2 b, out bool inRange) => Kernels.PointBox(a.Center.To3(), b.ToBox(), out inRange).AsSphereFirst(a.Center.To3(), a.Radius).To2();
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Sphere a, Obb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y));
+        private static DistanceResult3 Slow(Sphere a, Obb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Circle a, Obb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y));
+        private static DistanceResult2 Slow(Circle a, Obb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and an OBB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Obb3 b) =>
-            a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
+        public static bool Overlaps(Sphere a, Obb3 b)
+        {
+            var r = Core(a, b, out bool inRange);
+            return inRange && !b.Extreme ? r : Slow(a, b);
+        }
         /// <summary>Whether an OBB and a sphere (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Obb3 a, Sphere b) => Overlaps(b, a);
         /// <summary>Whether a circle and an OBB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Obb2 b) =>
-            a.Extreme | b.Extreme ? Slow(a, b) : Core(a, b);
+        public static bool Overlaps(Circle a, Obb2 b)
+        {
+            var r = Core(a, b, out bool inRange);
+            return inRange && !b.Extreme ? r : Slow(a, b);
+        }
         /// <summary>Whether an OBB and a circle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Obb2 a, Circle b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Sphere a, Obb3 b) => Kernels.PointBoxDistanceSquared(a.Center, b.ToBox()) <= a.Radius * a.Radius;
+        internal static bool Core(Sphere a, Obb3 b, out bool inRange) => Kernels.PointBoxDistanceSquared(a.Center, b.ToBox(), out inRange) <= a.Radius * a.Radius;
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Circle a, Obb2 b) => Kernels.PointBoxDistanceSquared(a.Center.To3(), b.ToBox()) <= a.Radius * a.Radius;
+        internal static bool Core(Circle a, Obb2 b, out bool inRange) => Kernels.PointBoxDistanceSquared(a.Center.To3(), b.ToBox(), out inRange) <= a.Radius * a.Radius;
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Sphere a, Obb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y));
+        private static bool Slow(Sphere a, Obb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Circle a, Obb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y));
+        private static bool Slow(Circle a, Obb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 
@@ -67,13 +79,13 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a sphere and an OBB (3D), computed in double: negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
+        public static DistanceResult3 Between(Sphere a, Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an OBB and a sphere (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Obb3 a, Sphere b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a circle and an OBB (2D), computed in double: negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner));
+        public static DistanceResult2 Between(Circle a, Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an OBB and a circle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Obb2 a, Circle b) => Between(b, a).Swapped();
@@ -83,13 +95,13 @@ namespace ProximityLib
     {
         /// <summary>Whether a sphere and an OBB (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
+        public static bool Overlaps(Sphere a, Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an OBB and a sphere (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Obb3 a, Sphere b) => Overlaps(b, a);
         /// <summary>Whether a circle and an OBB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
+        public static bool Overlaps(Circle a, Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an OBB and a circle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Obb2 a, Circle b) => Overlaps(b, a);

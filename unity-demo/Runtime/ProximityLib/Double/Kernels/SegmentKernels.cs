@@ -23,23 +23,26 @@ namespace ProximityLib.Double
         /// the canonical order (<see cref="Order"/>).
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)] // inlined twice or into a large caller, it exhausts the inlining budget
-        public static double SegmentSegmentCore(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, out double s, out double t)
+        public static double SegmentSegmentCore(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, out double s, out double t, out bool inRange)
         {
             var d0 = a1 - a0;
             var d1 = b1 - b0;
             var w = b0 - a0;
-            double a = d0.LengthSquared, e = d1.LengthSquared;
+            double a = d0.LengthSquared, e = d1.LengthSquared, size2 = a + e + w.LengthSquared;
+            // The configuration's squared size in the fast range, or every point the same; and below, the squared distance
+            // in it too or exactly 0 (a subnormal one would have lost bits, and 2^k-scaled inputs would not agree).
+            bool sized = Range.In(size2) || (size2 == 0 && a0 == a1 && b0 == b1 && a0 == b0);
             double b = Vector3D.Dot(d0, d1), c = -Vector3D.Dot(d0, w), f = -Vector3D.Dot(d1, w);
             if (a == 0 || e == 0)
             {
                 // A point against a segment (or a point).
-                if (a == 0 && e == 0) { s = 0; t = 0; return w.LengthSquared; }
+                if (a == 0 && e == 0) { s = 0; t = 0; return Residual(d0, d1, w, 0, 0, sized, out inRange); }
                 if (a == 0) { s = 0; t = Num.Clamp(f / e, 0, 1); }
                 else { t = 0; s = Num.Clamp(-c / a, 0, 1); }
-                return Residual(d0, d1, w, s, t);
+                return Residual(d0, d1, w, s, t, sized, out inRange);
             }
 
-            double k = InverseSizeScale(a + e + w.LengthSquared);
+            double k = InverseSizeScale(size2);
             var d0k = d0 * k;
             var d1k = d1 * k;
             var wk = w * k;
@@ -56,16 +59,19 @@ namespace ProximityLib.Double
                     // The gap between the lines, (w·n)²/|n|², carries no error from (s, t); crossing 2D segments give
                     // exactly 0.
                     s = si; t = ti;
-                    double wn = Vector3D.Dot(wk, n);
-                    return wn * wn / nn / k / k;
+                    double wn = Vector3D.Dot(wk, n), gap2 = wn * wn / nn / k / k;
+                    inRange = sized && (wn == 0 || Range.In(gap2));
+                    return gap2;
                 }
                 double outS = Math.Max(-si, si - 1), outT = Math.Max(-ti, ti - 1);
                 if (outS > outT || (outS == outT && !Order.Swap(a0, a1, b0, b1))) ClampFirst(a, e, b, c, f, si, out s, out t);
                 else ClampFirst(e, a, b, -f, -c, ti, out t, out s); // the mirror image: t first
-                return Residual(d0, d1, w, s, t);
+                return Residual(d0, d1, w, s, t, sized, out inRange);
             }
 
-            return NearlyParallel(a0, a1, b0, b1, d0, d1, w, nn > 0, si, ti, out s, out t);
+            double best = NearlyParallel(a0, a1, b0, b1, d0, d1, w, nn > 0, si, ti, out s, out t);
+            inRange = sized && (best == 0 || Range.In(best));
+            return best;
         }
 
         /// <summary>
@@ -127,7 +133,7 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// Residual p − q from the closest point q = a + t·d of the segment a + [0, 1]·d to p, formed from the nearer
-        /// endpoint (as <see cref="PointSegmentResidual"/>, with the direction given, not recomputed from two points).
+        /// endpoint (as <see cref="PointSegmentResidual(Vector3D, Vector3D, Vector3D, out double)"/>, with the direction given, not recomputed from two points).
         /// </summary>
         private static Vector3D Residual(Vector3D p, Vector3D a, Vector3D d, out double t)
         {
@@ -145,11 +151,17 @@ namespace ProximityLib.Double
 
         /// <summary>|a0 + s·d0 − b0 − t·d1|², formed from the differences so no endpoint's position enters.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double Residual(Vector3D d0, Vector3D d1, Vector3D w, double s, double t) => (d0 * s - d1 * t - w).LengthSquared;
-
-        public static DistanceResult3 SegmentSegment(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1)
+        private static double Residual(Vector3D d0, Vector3D d1, Vector3D w, double s, double t, bool sized, out bool inRange)
         {
-            double r2 = SegmentSegmentCore(a0, a1, b0, b1, out double s, out double t);
+            var v = d0 * s - d1 * t - w;
+            double r2 = v.LengthSquared;
+            inRange = sized && Range.Length2(v, r2);
+            return r2;
+        }
+
+        public static DistanceResult3 SegmentSegment(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, out bool inRange)
+        {
+            double r2 = SegmentSegmentCore(a0, a1, b0, b1, out double s, out double t, out inRange);
             s += 0; t += 0; // −0 + 0 = 0: the two argument orders may reach a zero parameter with either sign
             return new DistanceResult3(Math.Sqrt(r2), r2, SegmentPoint(a0, a1, s), SegmentPoint(b0, b1, t), s, t);
         }
@@ -258,13 +270,16 @@ namespace ProximityLib.Double
         /// evaluated on its own normalised direction so a noisy near-degenerate axis can only overestimate; the witness
         /// points are the closest points of the just-touching configuration, moved back.
         /// </summary>
-        public static DistanceResult3 SegmentBox(Vector3D a, Vector3D b, in Box box)
+        public static DistanceResult3 SegmentBox(Vector3D a, Vector3D b, in Box box, out bool inRange)
         {
+            inRange = Range.Box(Size(a, b, box));
             // The separating-axis verdict decides which side we are on: the squared gap alone would call a segment
             // crossing a zero-thickness box "apart" by rounding.
             if (!SegmentBoxOverlaps(a, b, box))
             {
                 double g = SegmentBoxSeparated(a, b, box, out double t, out var onSegment, out var onBox);
+                // A subnormal squared gap has lost bits: the slow path answers it at a scale where it has not.
+                inRange &= g == 0 || Range.In(g);
                 return new DistanceResult3(Math.Sqrt(g), g, onSegment, onBox, t, 0);
             }
 
@@ -306,6 +321,19 @@ namespace ProximityLib.Double
             double up = r - smin;   // moving it by +n·up clears the box
             if (down < best) { best = down; push = -n * down; }
             if (up < best) { best = up; push = n * up; }
+        }
+
+        /// <summary>The largest magnitude among the segment's ends relative to the box and the box's extents (see <see cref="Range"/>).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Size(Vector3D a, Vector3D b, in Box box) =>
+            Math.Max(Range.MaxAbs(a - box.Origin), Math.Max(Range.MaxAbs(b - box.Origin), Range.MaxAbs(box.Hi - box.Lo)));
+
+        /// <summary><see cref="SegmentBoxOverlaps(Vector3D, Vector3D, in Box)"/>, with whether the magnitudes allow the fast path.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool SegmentBoxOverlaps(Vector3D a, Vector3D b, in Box box, out bool inRange)
+        {
+            inRange = Range.Box(Size(a, b, box));
+            return SegmentBoxOverlaps(a, b, box);
         }
 
         /// <summary>Segment–box overlap by the separating-axis test in the box frame, no square roots, early outs.</summary>
