@@ -20,6 +20,16 @@ namespace ProximityLib
             if (value < 0) throw new ArgumentException($"{name} must be non-negative (got {value}).", name);
         }
 
+        /// <summary>
+        /// x + 0, which is x except that −0 becomes 0. Shapes store no −0: where two shapes agree in a coordinate, their
+        /// difference is then +0 in either argument order, so symmetric kernels give answers whose zero signs agree too.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double NoNegativeZero(double x) => x + 0.0;
+
+        public static Double.Vector3D NoNegativeZero(Double.Vector3D v) => new Double.Vector3D(v.X + 0.0, v.Y + 0.0, v.Z + 0.0);
+        public static Double.Vector2D NoNegativeZero(Double.Vector2D v) => new Double.Vector2D(v.X + 0.0, v.Y + 0.0);
+
         public static void Finite(Double.Vector3D v, string name)
         {
             if (!v.IsFinite) throw new ArgumentException($"{name} must have finite components (got {v}).", name);

@@ -18,7 +18,7 @@ namespace ProximityLib.Double
             Num.Finite(max, nameof(max));
             if (min.X > max.X || min.Y > max.Y || min.Z > max.Z)
                 throw new ArgumentException($"min {min} must not exceed max {max} on any axis.", nameof(min));
-            Min = min; Max = max;
+            Min = Num.NoNegativeZero(min); Max = Num.NoNegativeZero(max);
         }
 
 
@@ -84,7 +84,7 @@ namespace ProximityLib.Double
             Num.Finite(max, nameof(max));
             if (min.X > max.X || min.Y > max.Y)
                 throw new ArgumentException($"min {min} must not exceed max {max} on any axis.", nameof(min));
-            Min = min; Max = max;
+            Min = Num.NoNegativeZero(min); Max = Num.NoNegativeZero(max);
         }
 
 

@@ -31,7 +31,7 @@ namespace ProximityLib.Double
             Num.Finite(center, nameof(center));
             CheckHalfExtents(halfExtents);
             var x = Obb3.Direction(axisX.To3(), nameof(axisX));
-            Center = center; HalfExtents = halfExtents;
+            Center = Num.NoNegativeZero(center); HalfExtents = Num.NoNegativeZero(halfExtents);
             _cos = x.X; _sin = x.Y; _hasAxis = true;
             _extreme = !(Range.Moderate(center) && Range.Moderate(halfExtents));
         }
@@ -42,14 +42,14 @@ namespace ProximityLib.Double
             Num.Finite(center, nameof(center));
             CheckHalfExtents(halfExtents);
             Num.Finite(angle, nameof(angle));
-            Center = center; HalfExtents = halfExtents;
+            Center = Num.NoNegativeZero(center); HalfExtents = Num.NoNegativeZero(halfExtents);
             _cos = Math.Cos(angle); _sin = Math.Sin(angle); _hasAxis = true;
             _extreme = !(Range.Moderate(center) && Range.Moderate(halfExtents));
         }
 
         private Obb2(in Obb2 frame, Vector2D center, Vector2D halfExtents)
         {
-            Center = center; HalfExtents = halfExtents;
+            Center = Num.NoNegativeZero(center); HalfExtents = Num.NoNegativeZero(halfExtents);
             _cos = frame._cos; _sin = frame._sin; _hasAxis = frame._hasAxis;
             _extreme = !(Range.Moderate(center) && Range.Moderate(halfExtents));
         }

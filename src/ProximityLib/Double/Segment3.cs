@@ -14,7 +14,7 @@ namespace ProximityLib.Double
         {
             Num.Finite(start, nameof(start));
             Num.Finite(end, nameof(end));
-            Start = start; End = end;
+            Start = Num.NoNegativeZero(start); End = Num.NoNegativeZero(end);
         }
 
 
@@ -59,7 +59,7 @@ namespace ProximityLib.Double
         {
             Num.Finite(start, nameof(start));
             Num.Finite(end, nameof(end));
-            Start = start; End = end;
+            Start = Num.NoNegativeZero(start); End = Num.NoNegativeZero(end);
         }
 
 

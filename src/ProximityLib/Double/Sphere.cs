@@ -14,7 +14,7 @@ namespace ProximityLib.Double
         {
             Num.Finite(center, nameof(center));
             Num.NonNegative(radius, nameof(radius));
-            Center = center; Radius = radius;
+            Center = Num.NoNegativeZero(center); Radius = Num.NoNegativeZero(radius);
         }
 
 
@@ -53,7 +53,7 @@ namespace ProximityLib.Double
         {
             Num.Finite(center, nameof(center));
             Num.NonNegative(radius, nameof(radius));
-            Center = center; Radius = radius;
+            Center = Num.NoNegativeZero(center); Radius = Num.NoNegativeZero(radius);
         }
 
 

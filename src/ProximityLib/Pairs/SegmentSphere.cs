@@ -28,9 +28,9 @@ namespace ProximityLib.Double
         public static DistanceResult2 Between(Circle a, Segment2 b) => Between(b, a).Swapped();
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult3 Core(Segment3 a, Sphere b, out bool inRange) => Kernels.PointSegment(b.Center, a.Start, a.End, out inRange).AsSphereFirst(b.Center, b.Radius).Swapped();
+        internal static DistanceResult3 Core(Segment3 a, Sphere b, out bool inRange) => Kernels.PointSegment(b.Center, a.Start, a.End, true, out inRange).AsSphereFirst(b.Center, b.Radius).Swapped();
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult2 Core(Segment2 a, Circle b, out bool inRange) => Kernels.PointSegment(b.Center.To3(), a.Start.To3(), a.End.To3(), out inRange).AsSphereFirst(b.Center.To3(), b.Radius).Swapped().To2();
+        internal static DistanceResult2 Core(Segment2 a, Circle b, out bool inRange) => Kernels.PointSegment(b.Center.To3(), a.Start.To3(), a.End.To3(), true, out inRange).AsSphereFirst(b.Center.To3(), b.Radius).Swapped().To2();
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static DistanceResult3 Slow(Segment3 a, Sphere b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]

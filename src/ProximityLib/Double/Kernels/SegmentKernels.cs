@@ -20,7 +20,6 @@ namespace ProximityLib.Double
         /// instead, so the swapped answer is this one with s and t exchanged, bit for bit. Only exact ties fall back to
         /// the canonical order (<see cref="Order"/>).
         /// </summary>
-        [MethodImpl(MethodImplOptions.NoInlining)] // inlined twice or into a large caller, it exhausts the inlining budget
         public static double SegmentSegmentCore(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, out double s, out double t, out bool inRange)
         {
             var d0 = a1 - a0;

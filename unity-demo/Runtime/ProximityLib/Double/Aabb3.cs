@@ -20,7 +20,7 @@ namespace ProximityLib.Double
             Num.Finite(max, nameof(max));
             if (min.X > max.X || min.Y > max.Y || min.Z > max.Z)
                 throw new ArgumentException($"min {min} must not exceed max {max} on any axis.", nameof(min));
-            Min = min; Max = max;
+            Min = Num.NoNegativeZero(min); Max = Num.NoNegativeZero(max);
         }
 
 
@@ -86,7 +86,7 @@ namespace ProximityLib.Double
             Num.Finite(max, nameof(max));
             if (min.X > max.X || min.Y > max.Y)
                 throw new ArgumentException($"min {min} must not exceed max {max} on any axis.", nameof(min));
-            Min = min; Max = max;
+            Min = Num.NoNegativeZero(min); Max = Num.NoNegativeZero(max);
         }
 
 

@@ -54,7 +54,7 @@ namespace ProximityLib.Double
             y /= y.Length;
             z = z - x * Vector3D.Dot(x, z) - y * Vector3D.Dot(y, z);
             z /= z.Length;
-            Center = center; HalfExtents = halfExtents; _x = x; _y = y; _z = z; _hasAxes = true;
+            Center = Num.NoNegativeZero(center); HalfExtents = Num.NoNegativeZero(halfExtents); _x = x; _y = y; _z = z; _hasAxes = true;
             _extreme = !(Range.Moderate(center) && Range.Moderate(halfExtents));
         }
 
@@ -66,7 +66,7 @@ namespace ProximityLib.Double
 
         private Obb3(Vector3D center, Vector3D x, Vector3D y, Vector3D z, Vector3D halfExtents, bool trusted)
         {
-            Center = center; HalfExtents = halfExtents; _x = x; _y = y; _z = z; _hasAxes = trusted;
+            Center = Num.NoNegativeZero(center); HalfExtents = Num.NoNegativeZero(halfExtents); _x = x; _y = y; _z = z; _hasAxes = trusted;
             _extreme = !(Range.Moderate(center) && Range.Moderate(halfExtents));
         }
 

@@ -16,7 +16,7 @@ namespace ProximityLib.Double
         {
             Num.Finite(start, nameof(start));
             Num.Finite(end, nameof(end));
-            Start = start; End = end;
+            Start = Num.NoNegativeZero(start); End = Num.NoNegativeZero(end);
         }
 
 
@@ -61,7 +61,7 @@ namespace ProximityLib.Double
         {
             Num.Finite(start, nameof(start));
             Num.Finite(end, nameof(end));
-            Start = start; End = end;
+            Start = Num.NoNegativeZero(start); End = Num.NoNegativeZero(end);
         }
 
 

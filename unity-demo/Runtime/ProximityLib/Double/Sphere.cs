@@ -16,7 +16,7 @@ namespace ProximityLib.Double
         {
             Num.Finite(center, nameof(center));
             Num.NonNegative(radius, nameof(radius));
-            Center = center; Radius = radius;
+            Center = Num.NoNegativeZero(center); Radius = Num.NoNegativeZero(radius);
         }
 
 
@@ -55,7 +55,7 @@ namespace ProximityLib.Double
         {
             Num.Finite(center, nameof(center));
             Num.NonNegative(radius, nameof(radius));
-            Center = center; Radius = radius;
+            Center = Num.NoNegativeZero(center); Radius = Num.NoNegativeZero(radius);
         }
 
 

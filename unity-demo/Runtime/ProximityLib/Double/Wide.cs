@@ -26,8 +26,6 @@ namespace ProximityLib.Double
         /// <summary>2^-450 and 2^450: the box kernels' relative magnitudes.</summary>
         public const double BoxMin = 3.4395525670743494e-136, BoxMax = 2.9073548971824276e+135;
 
-        private const long Lo2Bits = (1023L - 960) << 52, Span2Bits = 1920L << 52;
-
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Moderate(double x)
         {
@@ -38,9 +36,12 @@ namespace ProximityLib.Double
         public static bool Moderate(Vector3D v) => Moderate(v.X) && Moderate(v.Y) && Moderate(v.Z);
         public static bool Moderate(Vector2D v) => Moderate(v.X) && Moderate(v.Y);
 
-        /// <summary>Whether a squared length x2 (≥ 0) lies in [2^-960, 2^960]: one subtraction and one unsigned compare; NaN and ∞ fail.</summary>
+        /// <summary>Whether a squared length x2 (≥ 0) lies in [2^-960, 2^960]: one subtraction and one unsigned compare of its bits; NaN and ∞ fail.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool In(double x2) => (ulong)(BitConverter.DoubleToInt64Bits(x2) - Lo2Bits) <= (ulong)Span2Bits;
+        public static bool In(double x2) => (ulong)(BitConverter.DoubleToInt64Bits(x2) - Lo2Bits) <= Span2Bits;
+
+        private const long Lo2Bits = (1023L - 960) << 52;
+        private const ulong Span2Bits = 1920UL << 52;
 
         /// <summary>
         /// Whether a squared length v2 = |v|² can be trusted: in [2^-960, 2^960], or exactly 0 because v is. NaN (an

@@ -30,9 +30,9 @@ namespace ProximityLib.Double
         public static DistanceResult2 Between(Segment2 a, Vector2D b) => Between(b, a).Swapped();
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult3 Core(Vector3D a, Segment3 b, out bool inRange) => Kernels.PointSegment(a, b.Start, b.End, out inRange).AsPointFirst(a);
+        internal static DistanceResult3 Core(Vector3D a, Segment3 b, out bool inRange) => Kernels.PointSegment(a, b.Start, b.End, false, out inRange).AsPointFirst(a);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult2 Core(Vector2D a, Segment2 b, out bool inRange) => Kernels.PointSegment(a.To3(), b.Start.To3(), b.End.To3(), out inRange).AsPointFirst(a.To3()).To2();
+        internal static DistanceResult2 Core(Vector2D a, Segment2 b, out bool inRange) => Kernels.PointSegment(a.To3(), b.Start.To3(), b.End.To3(), false, out inRange).AsPointFirst(a.To3()).To2();
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static DistanceResult3 Slow(Vector3D a, Segment3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
