@@ -164,10 +164,11 @@ md.AppendLine("## Range");
 md.AppendLine();
 md.AppendLine("- Float API: every finite float input (the double internals square at most ~10⁷⁷).");
 md.AppendLine("- Double API: the bounds above hold for configuration scales S from 2⁻¹⁰⁰⁰ to 2¹⁰⁰⁰ at any position (the");
-md.AppendLine("  `range-limits` family measures 2^±240 … 2^±1000, `mixed-scales` shapes 2⁴ … 2¹²⁰ apart in size). Shapes whose values");
-md.AppendLine("  all lie in [2⁻⁴⁰⁰, 2⁴⁰⁰] take the fast path; others are rescaled by an exact power of two, so scaling a configuration");
-md.AppendLine("  by 2^k scales every result exactly on either path (tested in `WideTests`, `PairMatrixTests`, `FamilyTests` and the");
-md.AppendLine("  fuzz). Beyond 2^±1000 answers stay finite where the true answer is representable (the fuzz checks every finite input).");
+md.AppendLine("  `range-limits` family measures 2^±240 … 2^±1000, `mixed-scales` shapes 2⁴ … 2¹²⁰ apart in size). Each query checks, on");
+md.AppendLine("  quantities it forms anyway, that its squares stay within 2^±960 (box queries: relative magnitudes within 2^±450); a");
+md.AppendLine("  configuration that fails is rescaled by an exact power of two, so scaling a configuration by 2^k scales every result");
+md.AppendLine("  exactly on either path (tested in `WideTests`, `PairMatrixTests`, `FamilyTests` and the fuzz). Beyond 2^±1000 answers");
+md.AppendLine("  stay finite where the true answer is representable (the fuzz checks every finite input).");
 md.AppendLine("- The SIMD batch queries (float lanes): configuration scales within 2^±28.");
 
 var worst = all.GroupBy(m => m.Pair).Select(g => g.OrderByDescending(Ed).First()).OrderByDescending(Ed);
