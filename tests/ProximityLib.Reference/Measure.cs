@@ -53,9 +53,15 @@ namespace ProximityReference
         /// <summary>The batch queries' safe range for the configuration's scale S: 2^±28.</summary>
         public const double BatchMinScale = 1.0 / (1 << 28), BatchMaxScale = 1 << 28;
 
-        /// <summary>The promised bound on E for a pair: 4 for point–AABB, point–segment and pairs with a circle/sphere, else 32.</summary>
-        public static double Bound(string pairKey) =>
-            pairKey.Contains("sphere") || pairKey.Contains("circle") || pairKey.EndsWith("point–AABB") || pairKey.EndsWith("point–segment") ? 4 : 32;
+        /// <summary>
+        /// The promised bound on E for a pair (docs/api.md): 16 for the one-step kernels (point–point, point–AABB,
+        /// point–segment, and a circle/sphere against a point, a segment, a circle/sphere or an AABB), else 32.
+        /// </summary>
+        public static double Bound(string pairKey)
+        {
+            string pair = pairKey.Substring(pairKey.IndexOf(' ') + 1);
+            return pair.Contains("OBB") || pair == "segment–segment" || pair == "AABB–AABB" || pair == "segment–AABB" ? 32 : 16;
+        }
 
         /// <summary>The batch query's distance for one pair, through sets of one, when the batch API covers the pair.</summary>
         private static float? Batch(object a, object b)

@@ -61,9 +61,9 @@ namespace ProximityLib.Double
         public static bool Overlaps(Obb2 a, Circle b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Sphere a, Obb3 b, out bool inRange) => Kernels.PointBoxDistanceSquared(a.Center, b.ToBox(), out inRange) <= a.Radius * a.Radius;
+        internal static bool Core(Sphere a, Obb3 b, out bool inRange) => Kernels.WithinRadius(Kernels.PointBoxDistanceSquared(a.Center, b.ToBox()), a.Radius, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Circle a, Obb2 b, out bool inRange) => Kernels.PointBoxDistanceSquared(a.Center.To3(), b.ToBox(), out inRange) <= a.Radius * a.Radius;
+        internal static bool Core(Circle a, Obb2 b, out bool inRange) => Kernels.WithinRadius(Kernels.PointBoxDistanceSquared(a.Center.To3(), b.ToBox()), a.Radius, out inRange);
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static bool Slow(Sphere a, Obb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]

@@ -65,11 +65,15 @@ namespace ProximityReference.Fuzz
             _cb.Localize(_frame);
         }
 
-        /// <summary>The promised E of a pair (docs/api.md): 4 for point–AABB, point–segment and any circle/sphere pair, else 32.</summary>
+        /// <summary>
+        /// The promised E of a pair (docs/api.md): 16 for the one-step kernels (a point against a point, an AABB or a
+        /// segment; a sphere against a point, a segment, a sphere or an AABB), else 32.
+        /// </summary>
         public static double Bound(Kind a, Kind b)
         {
             if (a > b) (a, b) = (b, a);
-            return a == Kind.Sphere || b == Kind.Sphere || (a == Kind.Point && (b == Kind.Aabb || b == Kind.Segment)) ? 4 : 32;
+            bool oneStep = a == Kind.Point ? b != Kind.Obb : a == Kind.Sphere && (b == Kind.Sphere || b == Kind.Aabb);
+            return oneStep || (a == Kind.Segment && b == Kind.Sphere) ? 16 : 32;
         }
 
         /// <summary>Runs every check; the exact reference (slow for box pairs) only when <paramref name="exact"/>.</summary>

@@ -58,8 +58,8 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// Point against segment. <paramref name="inRange"/>: the squared gap and the segment's squared length lie in the
-        /// fast range (or are exactly 0: the point on the segment, the segment a point, a == b; a squared length that
-        /// underflowed to 0 is not), see <see cref="Range"/>. The push-out normal is formed only when
+        /// fast range, see <see cref="Range"/> (an exact 0, the point on the segment or a segment that is a point, takes
+        /// the slow path: rare, and answered exactly there). The push-out normal is formed only when
         /// <paramref name="withNormal"/> (a constant at every call, so the other branch compiles away): a point's result
         /// never reads it.
         /// </summary>
@@ -68,7 +68,7 @@ namespace ProximityLib.Double
         {
             var r = PointSegmentResidual(p, a, b, out double t, out double dd);
             double r2 = r.LengthSquared, dist = Math.Sqrt(r2);
-            inRange = Range.Length2(r, r2) && (Range.In(dd) || a == b);
+            inRange = Range.In(r2) & Range.In(dd);
             return new PointContact(dist, r2, SegmentPoint(a, b, t), withNormal ? SegmentNormal(r, r2, dist, a, b, t, dd) : default, t);
         }
 
@@ -98,7 +98,7 @@ namespace ProximityLib.Double
         public static bool PointOnSegment(Vector3D p, Vector3D a, Vector3D b, out bool inRange)
         {
             var r = PointSegmentResidual(p, a, b, out _, out double dd);
-            inRange = Range.In(dd) || a == b;
+            inRange = Range.In(dd) | a == b;
             return r == default;
         }
 
@@ -108,8 +108,9 @@ namespace ProximityLib.Double
         {
             var r = PointSegmentResidual(center, a, b, out _, out double dd);
             double r2 = r.LengthSquared;
-            inRange = Range.Length2(r, r2) && (Range.In(dd) || a == b);
-            return r2 <= radius * radius;
+            double rr = radius * radius;
+            inRange = (Range.In(r2) | Range.In(rr)) & Range.In(dd);
+            return r2 <= rr;
         }
 
         /// <summary>A unit vector perpendicular to d, in the z = 0 plane whenever d is (so the 2D API stays planar); +X for d = 0.</summary>
@@ -127,7 +128,7 @@ namespace ProximityLib.Double
         {
             var r = p - center;
             double r2 = r.LengthSquared, len = Math.Sqrt(r2);
-            inRange = Range.Length2(r, r2);
+            inRange = Range.In(r2);
             // Coincident centres have no preferred direction: +X is documented and keeps the 2D API planar.
             var n = len > 0 ? r * (1 / len) : Vector3D.UnitX;
             double d = len - radius;
@@ -154,7 +155,7 @@ namespace ProximityLib.Double
                 double d2 = diff.LengthSquared;
                 double d = Math.Sqrt(d2);
                 var normal = d > 0 ? diff * (1 / d) : box.ToWorldOffset(Unit(q - c));
-                inRange = Range.Length2(diff, d2);
+                inRange = Range.In(d2);
                 return new PointContact(d, d2, box.Origin + offset, normal, 0);
             }
 
@@ -177,7 +178,7 @@ namespace ProximityLib.Double
                 var diff = p - c;
                 double d2 = diff.LengthSquared;
                 double d = Math.Sqrt(d2);
-                inRange = Range.Length2(diff, d2);
+                inRange = Range.In(d2);
                 return new PointContact(d, d2, c, d > 0 ? diff * (1 / d) : Unit(diff / MaxAbs(diff)), 0);
             }
             // Inside, the depth is a difference of coordinates: exact up to one rounding at any magnitude.
@@ -243,19 +244,10 @@ namespace ProximityLib.Double
                 && (box.Lo != box.Hi || p == box.Origin + box.ToWorldOffset(box.Lo));
         }
 
-        /// <summary>
-        /// Whether p lies in the closed sphere. <paramref name="inRange"/>: the squared gap or the squared radius lies in the
-        /// fast range; either way the comparison is decided by a normal value (a tiny gap against a normal radius, an
-        /// overflowed one against a finite radius), and only both out of range can mislead it.
-        /// </summary>
+        /// <summary>Whether p lies in the closed sphere; <paramref name="inRange"/> as for <see cref="WithinRadius"/>.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool PointInSphere(Vector3D p, Vector3D center, double radius, out bool inRange)
-        {
-            var r = p - center;
-            double r2 = r.LengthSquared, rr = radius * radius;
-            inRange = Range.In(r2) || Range.In(rr);
-            return r2 <= rr;
-        }
+        public static bool PointInSphere(Vector3D p, Vector3D center, double radius, out bool inRange) =>
+            WithinRadius((p - center).LengthSquared, radius, out inRange);
 
         /// <summary>
         /// Point against point, symmetric by construction: the witnesses are the points themselves and |b − a| = |a − b|
@@ -266,7 +258,7 @@ namespace ProximityLib.Double
         {
             var d = b - a;
             double d2 = d.LengthSquared;
-            inRange = Range.Length2(d, d2);
+            inRange = Range.In(d2);
             return new DistanceResult3(Math.Sqrt(d2), d2, a, b, 0, 0);
         }
 
@@ -285,7 +277,7 @@ namespace ProximityLib.Double
             double r = ra + rb, dist = len - r;
             // As for a point and a sphere of radius ra + rb; that sum is the only other quantity that could overflow while
             // the answer is finite.
-            inRange = Range.Length2(d, d2) && r <= double.MaxValue;
+            inRange = Range.In(d2) & r <= double.MaxValue;
             // Shapes store no −0 (see Num.NoNegativeZero), so where the centres agree in a coordinate d is +0 in either
             // order and the witnesses' zero signs agree too.
             return new DistanceResult3(dist, dist > 0 ? dist * dist : 0, ca + n * ra, cb - n * rb, 0, 0);
@@ -296,36 +288,38 @@ namespace ProximityLib.Double
         public static bool PointInAabb(Vector3D p, Vector3D min, Vector3D max) =>
             p.X >= min.X && p.X <= max.X && p.Y >= min.Y && p.Y <= max.Y && p.Z >= min.Z && p.Z <= max.Z;
 
-        /// <summary>
-        /// Squared distance from p to the closed axis-aligned box (Arvo's test without the square root).
-        /// <paramref name="inRange"/>: the squared gap lies in the fast range, or p is inside (every gap exactly 0).
-        /// </summary>
+        /// <summary>Squared distance from p to the closed axis-aligned box (Arvo's test without the square root); 0 inside.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double PointAabbDistanceSquared(Vector3D p, Vector3D min, Vector3D max, out bool inRange)
+        public static double PointAabbDistanceSquared(Vector3D p, Vector3D min, Vector3D max)
         {
             double dx = p.X - Num.Clamp(p.X, min.X, max.X);
             double dy = p.Y - Num.Clamp(p.Y, min.Y, max.Y);
             double dz = p.Z - Num.Clamp(p.Z, min.Z, max.Z);
-            double d2 = dx * dx + dy * dy + dz * dz;
-            inRange = Range.In(d2) || (dx == 0 && dy == 0 && dz == 0);
-            return d2;
+            return dx * dx + dy * dy + dz * dz;
         }
 
-        /// <summary>
-        /// Squared distance from p to the closed box (Arvo's test without the square root). <paramref name="inRange"/>:
-        /// the squared gap lies in the fast range, or p is inside (every gap exactly 0) and the box is not a point (whose
-        /// frame could swallow a subnormal offset) or p is its centre.
-        /// </summary>
+        /// <summary>Squared distance from p to the closed box (Arvo's test in the box's frame); 0 inside.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double PointBoxDistanceSquared(Vector3D p, in Box box, out bool inRange)
+        public static double PointBoxDistanceSquared(Vector3D p, in Box box)
         {
             var q = box.ToLocal(p - box.Origin);
             double dx = q.X - Num.Clamp(q.X, box.Lo.X, box.Hi.X);
             double dy = q.Y - Num.Clamp(q.Y, box.Lo.Y, box.Hi.Y);
             double dz = q.Z - Num.Clamp(q.Z, box.Lo.Z, box.Hi.Z);
-            double d2 = dx * dx + dy * dy + dz * dz;
-            inRange = Range.In(d2) || (dx == 0 && dy == 0 && dz == 0 && (box.Lo != box.Hi || p == box.Origin));
-            return d2;
+            return dx * dx + dy * dy + dz * dz;
+        }
+
+        /// <summary>
+        /// The verdict d2 ≤ r² of a ball test. <paramref name="inRange"/>: either square lies in the fast range. That is
+        /// enough: underflow or overflow of the other square only moves it further to the side it is on already (below
+        /// 2^-960 or above 2^960), so the verdict keeps the accuracy of the unscaled computation.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool WithinRadius(double d2, double radius, out bool inRange)
+        {
+            double rr = radius * radius;
+            inRange = Range.In(d2) | Range.In(rr);
+            return d2 <= rr;
         }
     }
 

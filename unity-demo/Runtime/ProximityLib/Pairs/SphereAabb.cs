@@ -63,9 +63,9 @@ namespace ProximityLib.Double
         public static bool Overlaps(Aabb2 a, Circle b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Sphere a, Aabb3 b, out bool inRange) => Kernels.PointAabbDistanceSquared(a.Center, b.Min, b.Max, out inRange) <= a.Radius * a.Radius;
+        internal static bool Core(Sphere a, Aabb3 b, out bool inRange) => Kernels.WithinRadius(Kernels.PointAabbDistanceSquared(a.Center, b.Min, b.Max), a.Radius, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Circle a, Aabb2 b, out bool inRange) => Kernels.PointAabbDistanceSquared(a.Center.To3(), b.Min.To3(), b.Max.To3(), out inRange) <= a.Radius * a.Radius;
+        internal static bool Core(Circle a, Aabb2 b, out bool inRange) => Kernels.WithinRadius(Kernels.PointAabbDistanceSquared(a.Center.To3(), b.Min.To3(), b.Max.To3()), a.Radius, out inRange);
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static bool Slow(Sphere a, Aabb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
