@@ -1,0 +1,376 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Runtime.InteropServices;
+using System.Text;
+
+namespace ProximitySpeed
+{
+    /// <summary>One line of a targets table: what is promised, what was measured, and whether it holds.</summary>
+    public sealed class TargetRow
+    {
+        public TargetRow(string what, string target, string measured, string verdict) { What = what; Target = target; Measured = measured; Verdict = verdict; }
+        public string What { get; }
+        public string Target { get; }
+        public string Measured { get; }
+        /// <summary>"met", "missed", "within noise" (a ratio above 1 by less than the run-to-run spread) or "n/a".</summary>
+        public string Verdict { get; }
+    }
+
+    /// <summary>The issue's targets (docs/performance.md), checked against one measurement, per runtime.</summary>
+    public static class Targets
+    {
+        /// <summary>The pairs with hand-written baselines, on which the library's ratios are promised.</summary>
+        public static readonly string[] BaselinePairs =
+            { "3D sphere–sphere", "3D point–AABB", "3D point–segment", "3D AABB–AABB", "3D segment–segment", "2D segment–segment" };
+
+        private static readonly string[] Precisions = { "float", "double" };
+
+        /// <summary>A ratio above 1 by less than this is inside the run-to-run spread the harness promises (±10%).</summary>
+        public const double Noise = 1.10;
+
+        public static List<TargetRow> For(Measurement m, Mode mode)
+        {
+            var rows = new List<TargetRow>();
+            bool mono = mode == Mode.Mono;
+            double distanceRatio = mono ? 1.5 : 1.1, betweenRatio = mono ? 3 : 1.5;
+            foreach (var pair in BaselinePairs)
+                foreach (var p in Precisions)
+                {
+                    string dist = $"{p} {pair} distance", over = $"{p} {pair} overlap";
+                    rows.Add(RatioRow(m, mode, dist, "library Distance", "baseline Distance", distanceRatio));
+                    rows.Add(RatioRow(m, mode, dist, "library Between", "baseline Between", betweenRatio));
+                    if (m.Has(mode, Measurement.Key(over, "baseline Overlaps")))
+                        rows.Add(RatioRow(m, mode, over, "library Overlaps", "baseline Overlaps", distanceRatio));
+                }
+            if (!mono)
+            {
+                foreach (var p in Precisions)
+                {
+                    rows.Add(TimeRow(m, mode, $"{p} 3D OBB–OBB overlap", "library Overlaps", 25));
+                    rows.Add(TimeRow(m, mode, $"{p} 3D segment–segment distance", "library Between", 12));
+                    foreach (var q in new[] { "3D OBB–OBB", "3D AABB–OBB" }) rows.Add(TimeRow(m, mode, $"{p} {q} distance", "library Between", 200));
+                    foreach (var q in new[] { "2D OBB–OBB", "2D AABB–OBB" }) rows.Add(TimeRow(m, mode, $"{p} {q} distance", "library Between", 60));
+                    foreach (var q in new[] { "3D segment–AABB", "3D segment–OBB", "2D segment–AABB", "2D segment–OBB" })
+                        rows.Add(TimeRow(m, mode, $"{p} {q} distance", "library Between", 40));
+                }
+                if (mode == Mode.NoPgo) rows.Add(PgoOffRow(m));
+                foreach (var key in m.Keys(mode).Where(k => k.Contains(" | old batch")).OrderBy(k => k, StringComparer.Ordinal))
+                {
+                    string now = key.Replace(" | old ", " | ");
+                    var r = m.Ratio(mode, now, key);
+                    if (r == null) continue;
+                    rows.Add(new TargetRow($"{now}: now ÷ at {Program.BatchReference}", "≤ 1", Text.Ratio(r.Value), Verdict(r.Value.Median, 1)));
+                }
+            }
+            else
+            {
+                foreach (var p in Precisions)
+                    foreach (var q in new[] { "3D OBB–OBB", "2D OBB–OBB" })
+                        rows.Add(TimeRow(m, mode, $"{p} {q} distance", "library Between", 1000));
+                foreach (var key in m.Keys(mode).Where(k => k.Contains(" | batch ")).OrderBy(k => k, StringComparer.Ordinal))
+                {
+                    string group = key.Substring(0, key.IndexOf(" | ", StringComparison.Ordinal));
+                    string scalar = Scalar(m, mode, group);
+                    var r = m.Ratio(mode, key, Measurement.Key(group, scalar));
+                    if (r == null) continue;
+                    rows.Add(new TargetRow($"{key} ÷ {scalar} (per pair)", "≤ 1", Text.Ratio(r.Value), Verdict(r.Value.Median, 1)));
+                }
+            }
+            return rows;
+        }
+
+        /// <summary>The scalar API a batch case answers the same question as: the distance alone where the library has it.</summary>
+        public static string Scalar(Measurement m, Mode mode, string group) =>
+            group.EndsWith(" overlap", StringComparison.Ordinal) ? "library Overlaps"
+            : m.Has(mode, Measurement.Key(group, "library Distance")) ? "library Distance" : "library Between";
+
+        private static string Verdict(double value, double limit) =>
+            value <= limit ? "met" : limit == 1 && value <= Noise ? "within noise" : "missed";
+
+        private static TargetRow RatioRow(Measurement m, Mode mode, string group, string a, string b, double limit)
+        {
+            string what = $"{group}: {a} ÷ {b}";
+            var r = m.Ratio(mode, Measurement.Key(group, a), Measurement.Key(group, b));
+            if (r == null)
+                return new TargetRow(what, $"≤ {limit}×", m.Has(mode, Measurement.Key(group, b)) ? $"no {a} in this library" : "not measured", "n/a");
+            return new TargetRow(what, $"≤ {limit}×", Text.Ratio(r.Value), Verdict(r.Value.Median, limit));
+        }
+
+        private static TargetRow TimeRow(Measurement m, Mode mode, string group, string name, double ns)
+        {
+            string what = $"{group}: {name}";
+            var t = m.Time(mode, Measurement.Key(group, name));
+            string target = ns >= 1000 ? $"≤ {ns / 1000:0.#} µs" : $"≤ {ns:0} ns";
+            return t == null ? new TargetRow(what, target, "not measured", "n/a") : new TargetRow(what, target, Text.Ns(t.Value) + " ns", Verdict(t.Value.Median, ns));
+        }
+
+        /// <summary>Every scalar library case without PGO against its default time (the medians of separate processes).</summary>
+        private static TargetRow PgoOffRow(Measurement m)
+        {
+            var ratios = m.Keys(Mode.NoPgo).Where(k => k.Contains(" | library ") && m.Has(Mode.Pgo, k))
+                .Select(k => (Key: k, Ratio: m.Time(Mode.NoPgo, k)!.Value.Median / m.Time(Mode.Pgo, k)!.Value.Median)).OrderByDescending(x => x.Ratio).ToList();
+            if (ratios.Count == 0) return new TargetRow("every scalar query: time without PGO ÷ default time", "≤ 1.3×", "not measured", "n/a");
+            var above = ratios.Where(x => x.Ratio > 1.3).ToList();
+            string measured = $"worst {ratios[0].Ratio:0.00} ({ratios[0].Key}); {above.Count} of {ratios.Count} above 1.3" +
+                              (above.Count > 0 ? ": " + string.Join(", ", above.Take(8).Select(x => $"{x.Key} {x.Ratio:0.00}")) + (above.Count > 8 ? ", …" : "") : "");
+            return new TargetRow("every scalar query: time without PGO ÷ default time", "≤ 1.3×", measured, above.Count == 0 ? "met" : "missed");
+        }
+    }
+
+    /// <summary>docs/performance.md and the speed-against-error plot from a measurement in every mode.</summary>
+    public static class Report
+    {
+        public static void Write(Measurement m, string dir, string loadBefore)
+        {
+            Directory.CreateDirectory(dir);
+            var accuracy = Accuracy.Read(Path.Combine(dir, "accuracy.md"));
+            var modes = m.Modes.ToList();
+            var md = new StringBuilder();
+            md.AppendLine("# Performance: speed against error");
+            md.AppendLine();
+            md.AppendLine("Generated by `dotnet run --project tests/ProximityLib.Speed -c Release -- report` " +
+                          $"({m.Elapsed.TotalMinutes:0} minutes); do not edit by hand. How it measures: [below](#how-this-is-measured).");
+            md.AppendLine();
+            md.AppendLine($"- Machine: {Environment.ProcessorCount} logical cores, {Cpu()}; {RuntimeInformation.OSDescription.Trim()}; " +
+                          $"1-minute load average {loadBefore} before the run and {Measurement.Load()} after it (the machine is shared).");
+            foreach (var mode in modes)
+                md.AppendLine($"- {mode.Title}: {m.Runs[mode][0].Runtime}, {m.Runs[mode].Count} processes, clock: {m.Runs[mode][0].Clock}, " +
+                              $"warm-up passes {string.Join("/", m.Runs[mode].Select(r => r.WarmUpPasses))}.");
+            md.AppendLine($"- {m.Options.Rounds} rounds per process, samples of about {m.Options.SampleMs} ms of CPU time, " +
+                          $"{Inputs.Count} input pairs per query ({m.Options.Distribution}: half apart, half overlapping, shuffled).");
+            md.AppendLine();
+            md.AppendLine("## What holds where");
+            md.AppendLine();
+            foreach (var line in Summary(m)) md.AppendLine("- " + line);
+            md.AppendLine();
+            md.AppendLine("![speed against error](performance.png)");
+            md.AppendLine();
+            foreach (var mode in modes)
+            {
+                var rows = Targets.For(m, mode);
+                md.AppendLine($"## Targets: {mode.Title}");
+                md.AppendLine();
+                md.AppendLine($"{rows.Count(r => r.Verdict == "met")} met, {rows.Count(r => r.Verdict == "within noise")} within noise, " +
+                              $"{rows.Count(r => r.Verdict == "missed")} missed, {rows.Count(r => r.Verdict == "n/a")} not measurable. " +
+                              "Ratios are the median over rounds of the two cases' times in the same round, then the median across processes " +
+                              "(± the farthest process); \"within noise\" is a ratio above 1 by less than the ±10% the report reproduces to.");
+                md.AppendLine();
+                md.AppendLine("| target | limit | measured | |");
+                md.AppendLine("| --- | --- | --- | --- |");
+                foreach (var r in rows) md.AppendLine($"| {r.What} | {r.Target} | {r.Measured} | {r.Verdict} |");
+                md.AppendLine();
+            }
+
+            md.AppendLine("## Every case");
+            md.AppendLine();
+            md.AppendLine("ns per query (± the farthest process from the median); × baseline: the ratio to the hand-written baseline of the same " +
+                          "answer in the same group (Between to Between, Distance and batch to Distance, Overlaps to Overlaps). Max E: the largest " +
+                          "error the accuracy run measured ([accuracy.md](accuracy.md)), in units of the method's own precision. B/query: the most " +
+                          "any round allocated, in any runtime.");
+            md.AppendLine();
+            md.AppendLine("| group | case | " + string.Join(" | ", modes.Select(x => $"{x.Title} ns | × baseline")) + " | B/query | max E |");
+            md.AppendLine("| --- | --- | " + string.Join(" | ", modes.Select(_ => "--- | ---")) + " | --- | --- |");
+            foreach (var key in AllKeys(m))
+            {
+                var (group, name) = Split(key);
+                var cells = new List<string>();
+                foreach (var mode in modes)
+                {
+                    var t = m.Time(mode, key);
+                    cells.Add(t == null ? "—" : Text.Ns(t.Value));
+                    string? baseline = Baseline(m, mode, group, name);
+                    var r = baseline == null ? null : m.Ratio(mode, key, Measurement.Key(group, baseline));
+                    cells.Add(r == null ? "" : $"{r.Value.Median:0.00}");
+                }
+                double bytes = modes.Max(x => m.Has(x, key) ? m.MaxBytesPerQuery(x, key) : 0);
+                double? e = accuracy.MaxE(group, name);
+                md.AppendLine($"| {group} | {name} | {string.Join(" | ", cells)} | {bytes:0.##} | {(e.HasValue ? Accuracy.Format(e.Value) : "—")} |");
+            }
+            md.AppendLine();
+            md.AppendLine("## How this is measured");
+            md.AppendLine();
+            md.AppendLine("- Every case runs in one process per measurement, interleaved: each round times one short sample of every case, the groups " +
+                          "in random order and a group's cases (library, baseline, batch) back to back in random order, so load changes fall on " +
+                          "all of them alike. A case's time is the median over rounds, then the median across processes; the thread's CPU time is " +
+                          "the clock, so time spent descheduled by other processes is not counted.");
+            md.AppendLine("- Before timing, every case runs repeatedly with pauses until the runtime stops compiling (tiering, OSR and PGO's " +
+                          "instrumented code otherwise leave loops in unoptimised code); Mono compiles once.");
+            md.AppendLine("- The baselines (tests/ProximityLib.Speed.Cases/Baselines.cs) are the simplest correct C# for the same answer, written " +
+                          "from the formula: System.Numerics in float, scalar arithmetic in double. On Mono the same baselines are compiled into " +
+                          "the same program as the library (Roslyn from the .NET SDK against Mono's class libraries, run by `mono`).");
+            md.AppendLine($"- Batch rows are per pair; their \"old batch\" twins are the same cases compiled against the library at {Program.BatchReference}, " +
+                          "measured in the same processes.");
+            md.AppendLine("- Reproduce a subset: `dotnet run --project tests/ProximityLib.Speed -c Release -- run --modes pgo,nopgo,mono --filter \"3D OBB–OBB\"`; " +
+                          "an A/B against another commit: `-- ab --against <ref>`.");
+            File.WriteAllText(Path.Combine(dir, "performance.md"), md.ToString().Replace("\r\n", "\n"));
+            Plot(m, accuracy, Path.Combine(dir, "performance.png"));
+        }
+
+        /// <summary>Plain sentences: which speed-ups hold on which runtime.</summary>
+        private static IEnumerable<string> Summary(Measurement m)
+        {
+            foreach (var mode in m.Modes)
+            {
+                var batch = m.Keys(mode).Where(k => k.Contains(" | batch paired ")).OrderBy(k => k, StringComparer.Ordinal)
+                    .Select(k => (Key: k, Ratio: m.Ratio(mode, k, Measurement.Key(Split(k).Group, Targets.Scalar(m, mode, Split(k).Group)))))
+                    .Where(x => x.Ratio != null).Select(x => 1 / x.Ratio!.Value.Median).ToList();
+                if (batch.Count > 0)
+                    yield return $"{mode.Title}: the paired batch queries take {Range(batch.Select(x => 1 / x))} of the scalar API's time per pair " +
+                                 (batch.Min() >= 1.5 ? $"(a speed-up of {batch.Min():0.0}–{batch.Max():0.0}×, which holds here)."
+                                  : batch.Max() < 1.1 ? "(no speed-up here: Vector<T> is not accelerated on this runtime, so the batch runs lane by lane)."
+                                  : $"(the speed-up, {batch.Min():0.0}–{batch.Max():0.0}×, holds only in part here).");
+                var between = Targets.BaselinePairs.SelectMany(p => new[] { "float", "double" }.Select(x => $"{x} {p} distance"))
+                    .Select(g => m.Ratio(mode, Measurement.Key(g, "library Between"), Measurement.Key(g, "baseline Between")))
+                    .Where(r => r != null).Select(r => r!.Value.Median).ToList();
+                var distance = Targets.BaselinePairs.SelectMany(p => new[] { "float", "double" }.Select(x => $"{x} {p} distance"))
+                    .Select(g => m.Ratio(mode, Measurement.Key(g, "library Distance"), Measurement.Key(g, "baseline Distance")))
+                    .Where(r => r != null).Select(r => r!.Value.Median).ToList();
+                if (between.Count > 0)
+                    yield return $"{mode.Title}: against the hand-written baselines, the library's `Between` takes {Range(between)} of their time" +
+                                 (distance.Count > 0 ? $", its distance-only `Distance` {Range(distance)}." : "; this library has no distance-only entry point to compare.");
+            }
+            if (m.Runs.ContainsKey(Mode.Pgo) && m.Runs.ContainsKey(Mode.NoPgo))
+            {
+                var r = m.Keys(Mode.NoPgo).Where(k => k.Contains(" | library ") && m.Has(Mode.Pgo, k))
+                    .Select(k => m.Time(Mode.NoPgo, k)!.Value.Median / m.Time(Mode.Pgo, k)!.Value.Median).ToList();
+                if (r.Count > 0)
+                    yield return $"Without PGO the scalar queries take {Range(r)} of their default time (median {Stats.Median(r):0.00}×).";
+            }
+        }
+
+        private static string Range(IEnumerable<double> ratios)
+        {
+            var list = ratios.ToList();
+            return $"{list.Min():0.00}–{list.Max():0.00}× (median {Stats.Median(list):0.00}×)";
+        }
+
+        /// <summary>The baseline a case is compared with in the table, if its group has one.</summary>
+        private static string? Baseline(Measurement m, Mode mode, string group, string name)
+        {
+            if (name.StartsWith("baseline", StringComparison.Ordinal) || name.StartsWith("old ", StringComparison.Ordinal)) return null;
+            string? b = name.EndsWith("Between", StringComparison.Ordinal) ? "baseline Between"
+                : name.EndsWith("Overlaps", StringComparison.Ordinal) ? "baseline Overlaps"
+                : name.EndsWith("Distance", StringComparison.Ordinal) || name.EndsWith("Distances", StringComparison.Ordinal) ? "baseline Distance" : null;
+            return b != null && m.Has(mode, Measurement.Key(group, b)) ? b : null;
+        }
+
+        private static IEnumerable<string> AllKeys(Measurement m) => m.Modes.SelectMany(m.Keys).Distinct()
+            .OrderBy(k => Split(k).Group.Contains("scene") ? 1 : 0)
+            .ThenBy(k => Split(k).Group.Substring(Split(k).Group.IndexOf(' ') + 1), StringComparer.Ordinal)
+            .ThenBy(k => Split(k).Group, StringComparer.Ordinal)
+            .ThenBy(k => Order(Split(k).Name)).ThenBy(k => k, StringComparer.Ordinal);
+
+        private static int Order(string name) =>
+            name.StartsWith("library", StringComparison.Ordinal) ? 0 : name.StartsWith("baseline", StringComparison.Ordinal) ? 1
+            : name.StartsWith("batch", StringComparison.Ordinal) ? 2 : name.StartsWith("old", StringComparison.Ordinal) ? 3 : 4;
+
+        public static (string Group, string Name) Split(string key)
+        {
+            int cut = key.IndexOf(" | ", StringComparison.Ordinal);
+            return (key.Substring(0, cut), key.Substring(cut + 3));
+        }
+
+        private static string Cpu()
+        {
+            try
+            {
+                var line = File.ReadLines("/proc/cpuinfo").FirstOrDefault(l => l.StartsWith("model name", StringComparison.Ordinal));
+                return line?.Split(':', 2)[1].Trim() ?? RuntimeInformation.ProcessArchitecture.ToString();
+            }
+            catch (IOException) { return RuntimeInformation.ProcessArchitecture.ToString(); }
+        }
+
+        /// <summary>
+        /// Time against error on log axes, .NET 10 default: the library's distance queries (Between) in float and double,
+        /// the paired batch queries and the paper's formulas, each at its max E from the accuracy run times its unit roundoff.
+        /// </summary>
+        private static void Plot(Measurement m, Accuracy accuracy, string file)
+        {
+            var mode = m.Runs.ContainsKey(Mode.Pgo) ? Mode.Pgo : m.Modes.First();
+            var series = new Dictionary<string, List<(double X, double Y)>>
+            {
+                ["library, float API"] = new List<(double, double)>(), ["library, double API"] = new List<(double, double)>(),
+                ["library, SIMD batch (float)"] = new List<(double, double)>(), ["paper formulas (double)"] = new List<(double, double)>(),
+            };
+            foreach (var key in m.Keys(mode))
+            {
+                var (group, name) = Split(key);
+                if (!group.EndsWith(" distance", StringComparison.Ordinal)) continue;
+                string? s = name == "library Between" ? (group.StartsWith("float", StringComparison.Ordinal) ? "library, float API" : "library, double API")
+                    : name == "batch paired Distances" ? "library, SIMD batch (float)" : name == "paper formula Distance" ? "paper formulas (double)" : null;
+                double? e = accuracy.MaxE(group, name);
+                if (s == null || e == null || double.IsInfinity(e.Value)) continue;
+                double u = group.StartsWith("float", StringComparison.Ordinal) ? Math.Pow(2, -24) : Math.Pow(2, -53);
+                series[s].Add((Math.Log10(Math.Max(e.Value, 0.01) * u), Math.Log10(m.Time(mode, key)!.Value.Median)));
+            }
+            var plt = new ScottPlot.Plot();
+            foreach (var (label, points) in series.Where(x => x.Value.Count > 0))
+            {
+                var sc = plt.Add.ScatterPoints(points.Select(p => p.X).ToArray(), points.Select(p => p.Y).ToArray());
+                sc.LegendText = label;
+                sc.MarkerSize = 8;
+            }
+            plt.Axes.Bottom.TickGenerator = new ScottPlot.TickGenerators.NumericAutomatic { LabelFormatter = v => $"1e{v:0}" };
+            plt.Axes.Left.TickGenerator = new ScottPlot.TickGenerators.NumericAutomatic { LabelFormatter = v => $"{Math.Pow(10, v):0.#} ns" };
+            plt.XLabel("max relative error E·u (log; accuracy.md)");
+            plt.YLabel($"time per distance query, {mode.Title} (log)");
+            plt.Title("ProximityLib: speed against error, one point per method per query");
+            plt.ShowLegend(ScottPlot.Alignment.UpperRight);
+            plt.SavePng(file, 900, 560);
+        }
+    }
+
+    /// <summary>The largest errors docs/accuracy.md reports: per query and precision, for the batch, and for the paper's formulas.</summary>
+    public sealed class Accuracy
+    {
+        private readonly Dictionary<string, double> _max = new Dictionary<string, double>(StringComparer.Ordinal);
+
+        public static Accuracy Read(string path)
+        {
+            var a = new Accuracy();
+            if (!File.Exists(path)) return a;
+            string section = "";
+            foreach (var line in File.ReadLines(path))
+            {
+                if (line.StartsWith("## ", StringComparison.Ordinal)) section = line;
+                if (!line.StartsWith("| ", StringComparison.Ordinal) || line.StartsWith("| ---", StringComparison.Ordinal)
+                    || line.StartsWith("| query", StringComparison.Ordinal) || line.StartsWith("| family", StringComparison.Ordinal)) continue;
+                var c = line.Split('|').Select(x => x.Trim()).ToArray();
+                if (section.StartsWith("## Per query", StringComparison.Ordinal))
+                {
+                    a.Set($"double {c[1]}", Parse(c[3]));
+                    a.Set($"float {c[1]}", Parse(c[5]));
+                    a.Set($"batch {c[1]}", Parse(c[7]));
+                }
+                else if (section.StartsWith("## What the robust", StringComparison.Ordinal))
+                    a.Set($"paper {c[2]}", Parse(c[4]));
+            }
+            return a;
+        }
+
+        private void Set(string key, double value)
+        {
+            if (double.IsNaN(value)) return;
+            _max[key] = _max.TryGetValue(key, out var v) ? Math.Max(v, value) : value;
+        }
+
+        private static double Parse(string s) =>
+            s == "Infinity" ? double.PositiveInfinity : double.TryParse(s, NumberStyles.Float, CultureInfo.InvariantCulture, out var v) ? v : double.NaN;
+
+        public static string Format(double e) => double.IsInfinity(e) ? "∞" : e >= 1000 ? e.ToString("0.0e0", CultureInfo.InvariantCulture) : e.ToString("0.00", CultureInfo.InvariantCulture);
+
+        /// <summary>Max E of a distance case ("float 3D sphere–sphere distance", "library Between"); null for overlaps and baselines.</summary>
+        public double? MaxE(string group, string name)
+        {
+            if (!group.EndsWith(" distance", StringComparison.Ordinal)) return null;
+            string query = group.Substring(group.IndexOf(' ') + 1, group.Length - group.IndexOf(' ') - 1 - " distance".Length);
+            string? key = name.StartsWith("library", StringComparison.Ordinal) ? group.Substring(0, group.IndexOf(' ')) + " " + query
+                : name.StartsWith("batch", StringComparison.Ordinal) ? "batch " + query
+                : name.StartsWith("paper", StringComparison.Ordinal) ? "paper " + query : null;
+            return key != null && _max.TryGetValue(key, out var e) ? e : null;
+        }
+    }
+}
