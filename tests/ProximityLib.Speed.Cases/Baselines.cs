@@ -154,6 +154,13 @@ namespace ProximitySpeed
             a.Min.X <= b.Max.X && a.Max.X >= b.Min.X && a.Min.Y <= b.Max.Y && a.Max.Y >= b.Min.Y && a.Min.Z <= b.Max.Z && a.Max.Z >= b.Min.Z;
     }
 
+    /// <summary>Overlap when the center's squared distance to its clamp into the box is at most r².</summary>
+    [Case(Baseline, Precision.Float, "3D sphere–AABB")]
+    public readonly struct SphereAabbF : IOverlap<SphereF, BoxF>
+    {
+        public bool Overlaps(in SphereF s, in BoxF b) => Vector3.DistanceSquared(s.Center, Vector3.Clamp(s.Center, b.Min, b.Max)) <= s.Radius * s.Radius;
+    }
+
     /// <summary>Closest points of two segments by the clamped normal equations (SegmentParameters).</summary>
     [Case(Baseline, Precision.Float, "3D segment–segment")]
     public readonly struct SegmentSegmentF : IBetween<SegmentF, SegmentF>, IDistance<SegmentF, SegmentF>
@@ -331,6 +338,19 @@ namespace ProximitySpeed
 
         public bool Overlaps(in BoxD a, in BoxD b) =>
             a.MinX <= b.MaxX && a.MaxX >= b.MinX && a.MinY <= b.MaxY && a.MaxY >= b.MinY && a.MinZ <= b.MaxZ && a.MaxZ >= b.MinZ;
+    }
+
+    /// <summary>Overlap when the center's squared distance to its clamp into the box is at most r².</summary>
+    [Case(Baseline, Precision.Double, "3D sphere–AABB")]
+    public readonly struct SphereAabbD : IOverlap<SphereD, BoxD>
+    {
+        public bool Overlaps(in SphereD s, in BoxD b)
+        {
+            double dx = s.X - Math.Min(Math.Max(s.X, b.MinX), b.MaxX);
+            double dy = s.Y - Math.Min(Math.Max(s.Y, b.MinY), b.MaxY);
+            double dz = s.Z - Math.Min(Math.Max(s.Z, b.MinZ), b.MaxZ);
+            return dx * dx + dy * dy + dz * dz <= s.R * s.R;
+        }
     }
 
     /// <summary>Closest points of two segments by the clamped normal equations (SegmentParameters).</summary>

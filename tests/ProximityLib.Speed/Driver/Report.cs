@@ -62,7 +62,7 @@ namespace ProximitySpeed
                     string now = key.Replace(" | old ", " | ");
                     var r = m.Ratio(mode, now, key);
                     if (r == null) continue;
-                    rows.Add(new TargetRow($"{now}: now ÷ at {Program.BatchReference}", "≤ 1", Text.Ratio(r.Value), Verdict(r.Value.Median, 1)));
+                    rows.Add(new TargetRow($"{Label(now)}: now ÷ at {Program.BatchReference}", "≤ 1", Text.Ratio(r.Value), Verdict(r.Value.Median, 1)));
                 }
             }
             else
@@ -76,7 +76,7 @@ namespace ProximitySpeed
                     string scalar = Scalar(m, mode, group);
                     var r = m.Ratio(mode, key, Measurement.Key(group, scalar));
                     if (r == null) continue;
-                    rows.Add(new TargetRow($"{key} ÷ {scalar} (per pair)", "≤ 1", Text.Ratio(r.Value), Verdict(r.Value.Median, 1)));
+                    rows.Add(new TargetRow($"{Label(key)} ÷ {scalar} (per pair)", "≤ 1", Text.Ratio(r.Value), Verdict(r.Value.Median, 1)));
                 }
             }
             return rows;
@@ -86,6 +86,9 @@ namespace ProximitySpeed
         public static string Scalar(Measurement m, Mode mode, string group) =>
             group.EndsWith(" overlap", StringComparison.Ordinal) ? "library Overlaps"
             : m.Has(mode, Measurement.Key(group, "library Distance")) ? "library Distance" : "library Between";
+
+        /// <summary>A case key as a table cell: "group: name" (a key's " | " would split the cell).</summary>
+        private static string Label(string key) => key.Replace(" | ", ": ");
 
         private static string Verdict(double value, double limit) =>
             value <= limit ? "met" : limit == 1 && value <= Noise ? "within noise" : "missed";
@@ -126,7 +129,7 @@ namespace ProximitySpeed
         public static void Write(Measurement m, string dir, string loadBefore)
         {
             Directory.CreateDirectory(dir);
-            var accuracy = Accuracy.Read(Path.Combine(dir, "accuracy.md"));
+            var accuracy = Accuracy.Read(Path.Combine(Builds.Root, "docs", "accuracy.md"));
             var modes = m.Modes.ToList();
             var md = new StringBuilder();
             md.AppendLine("# Performance: speed against error");
@@ -289,20 +292,21 @@ namespace ProximitySpeed
         /// </summary>
         private static void Plot(Measurement m, Accuracy accuracy, string file)
         {
+            const string Paper = "paper formulas (double; largest finite E, ∞ at the range limits)";
             var mode = m.Runs.ContainsKey(Mode.Pgo) ? Mode.Pgo : m.Modes.First();
             var series = new Dictionary<string, List<(double X, double Y)>>
             {
                 ["library, float API"] = new List<(double, double)>(), ["library, double API"] = new List<(double, double)>(),
-                ["library, SIMD batch (float)"] = new List<(double, double)>(), ["paper formulas (double)"] = new List<(double, double)>(),
+                ["library, SIMD batch (float)"] = new List<(double, double)>(), [Paper] = new List<(double, double)>(),
             };
             foreach (var key in m.Keys(mode))
             {
                 var (group, name) = Split(key);
                 if (!group.EndsWith(" distance", StringComparison.Ordinal)) continue;
                 string? s = name == "library Between" ? (group.StartsWith("float", StringComparison.Ordinal) ? "library, float API" : "library, double API")
-                    : name == "batch paired Distances" ? "library, SIMD batch (float)" : name == "paper formula Distance" ? "paper formulas (double)" : null;
-                double? e = accuracy.MaxE(group, name);
-                if (s == null || e == null || double.IsInfinity(e.Value)) continue;
+                    : name == "batch paired Distances" ? "library, SIMD batch (float)" : name == "paper formula Distance" ? Paper : null;
+                double? e = accuracy.MaxE(group, name, finite: true);
+                if (s == null || e == null) continue;
                 double u = group.StartsWith("float", StringComparison.Ordinal) ? Math.Pow(2, -24) : Math.Pow(2, -53);
                 series[s].Add((Math.Log10(Math.Max(e.Value, 0.01) * u), Math.Log10(m.Time(mode, key)!.Value.Median)));
             }
@@ -327,6 +331,7 @@ namespace ProximitySpeed
     public sealed class Accuracy
     {
         private readonly Dictionary<string, double> _max = new Dictionary<string, double>(StringComparer.Ordinal);
+        private readonly Dictionary<string, double> _maxFinite = new Dictionary<string, double>(StringComparer.Ordinal);
 
         public static Accuracy Read(string path)
         {
@@ -355,6 +360,7 @@ namespace ProximitySpeed
         {
             if (double.IsNaN(value)) return;
             _max[key] = _max.TryGetValue(key, out var v) ? Math.Max(v, value) : value;
+            if (!double.IsInfinity(value)) _maxFinite[key] = _maxFinite.TryGetValue(key, out var f) ? Math.Max(f, value) : value;
         }
 
         private static double Parse(string s) =>
@@ -362,15 +368,18 @@ namespace ProximitySpeed
 
         public static string Format(double e) => double.IsInfinity(e) ? "∞" : e >= 1000 ? e.ToString("0.0e0", CultureInfo.InvariantCulture) : e.ToString("0.00", CultureInfo.InvariantCulture);
 
-        /// <summary>Max E of a distance case ("float 3D sphere–sphere distance", "library Between"); null for overlaps and baselines.</summary>
-        public double? MaxE(string group, string name)
+        /// <summary>
+        /// Max E of a distance case ("float 3D sphere–sphere distance", "library Between"); null for overlaps and baselines.
+        /// <paramref name="finite"/>: the largest finite one (the paper's formulas overflow to ∞ at the range limits).
+        /// </summary>
+        public double? MaxE(string group, string name, bool finite = false)
         {
             if (!group.EndsWith(" distance", StringComparison.Ordinal)) return null;
             string query = group.Substring(group.IndexOf(' ') + 1, group.Length - group.IndexOf(' ') - 1 - " distance".Length);
             string? key = name.StartsWith("library", StringComparison.Ordinal) ? group.Substring(0, group.IndexOf(' ')) + " " + query
                 : name.StartsWith("batch", StringComparison.Ordinal) ? "batch " + query
                 : name.StartsWith("paper", StringComparison.Ordinal) ? "paper " + query : null;
-            return key != null && _max.TryGetValue(key, out var e) ? e : null;
+            return key != null && (finite ? _maxFinite : _max).TryGetValue(key, out var e) ? e : null;
         }
     }
 }

@@ -67,7 +67,10 @@ namespace ProximitySpeed
         }
     }
 
-    /// <summary>Every case's median per mode, written by --save, and the comparison of two such files (compare).</summary>
+    /// <summary>
+    /// Every case's median per mode, written by --save (mode, case, median across processes, each process's median over
+    /// rounds; tab-separated), and the comparison of two such files (compare).
+    /// </summary>
     public static class Saved
     {
         public static void Write(Measurement m, string path)
@@ -76,7 +79,8 @@ namespace ProximitySpeed
             foreach (var mode in m.Modes)
                 foreach (var key in m.Keys(mode).OrderBy(k => k, StringComparer.Ordinal))
                     if (m.Time(mode, key) is Spread s)
-                        text.Append(mode.Name).Append('\t').Append(key).Append('\t').Append(s.Median.ToString("R", CultureInfo.InvariantCulture)).Append('\n');
+                        text.Append(mode.Name).Append('\t').Append(key).Append('\t').Append(s.Median.ToString("R", CultureInfo.InvariantCulture)).Append('\t')
+                            .Append(string.Join(" ", m.Runs[mode].Select(r => r.Cases[key].Median.ToString("R", CultureInfo.InvariantCulture)))).Append('\n');
             File.WriteAllText(path, text.ToString());
         }
 
