@@ -109,34 +109,34 @@ namespace ProximityMonoCheck
             new F.Obb2(new Vector2(2, 0), Vector2.UnitX, Vector2.Zero), new F.Obb2(Far2, 0.5235988f, new Vector2(1, 2)),
         };
 
-        // ---- The 200 query overloads: every ordered pair of kinds, Between and Overlaps, float and double. ----
+        // ---- The 300 query overloads: every ordered pair of kinds, Between, Distance and Overlaps, float and double. ----
 
         private static void Float3()
         {
-            Pairs(P3, P3, FC.Between, FQ.Overlaps); Pairs(P3, G3, FC.Between, FQ.Overlaps); Pairs(P3, S3, FC.Between, FQ.Overlaps);
-            Pairs(P3, A3, FC.Between, FQ.Overlaps); Pairs(P3, B3, FC.Between, FQ.Overlaps);
-            Pairs(G3, P3, FC.Between, FQ.Overlaps); Pairs(G3, G3, FC.Between, FQ.Overlaps); Pairs(G3, S3, FC.Between, FQ.Overlaps);
-            Pairs(G3, A3, FC.Between, FQ.Overlaps); Pairs(G3, B3, FC.Between, FQ.Overlaps);
-            Pairs(S3, P3, FC.Between, FQ.Overlaps); Pairs(S3, G3, FC.Between, FQ.Overlaps); Pairs(S3, S3, FC.Between, FQ.Overlaps);
-            Pairs(S3, A3, FC.Between, FQ.Overlaps); Pairs(S3, B3, FC.Between, FQ.Overlaps);
-            Pairs(A3, P3, FC.Between, FQ.Overlaps); Pairs(A3, G3, FC.Between, FQ.Overlaps); Pairs(A3, S3, FC.Between, FQ.Overlaps);
-            Pairs(A3, A3, FC.Between, FQ.Overlaps); Pairs(A3, B3, FC.Between, FQ.Overlaps);
-            Pairs(B3, P3, FC.Between, FQ.Overlaps); Pairs(B3, G3, FC.Between, FQ.Overlaps); Pairs(B3, S3, FC.Between, FQ.Overlaps);
-            Pairs(B3, A3, FC.Between, FQ.Overlaps); Pairs(B3, B3, FC.Between, FQ.Overlaps);
+            Pairs(P3, P3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(P3, G3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(P3, S3, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(P3, A3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(P3, B3, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(G3, P3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(G3, G3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(G3, S3, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(G3, A3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(G3, B3, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(S3, P3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(S3, G3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(S3, S3, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(S3, A3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(S3, B3, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(A3, P3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(A3, G3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(A3, S3, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(A3, A3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(A3, B3, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(B3, P3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(B3, G3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(B3, S3, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(B3, A3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(B3, B3, FC.Between, FC.Distance, FQ.Overlaps);
         }
 
         private static void Float2()
         {
-            Pairs(P2, P2, FC.Between, FQ.Overlaps); Pairs(P2, G2, FC.Between, FQ.Overlaps); Pairs(P2, C2, FC.Between, FQ.Overlaps);
-            Pairs(P2, A2, FC.Between, FQ.Overlaps); Pairs(P2, B2, FC.Between, FQ.Overlaps);
-            Pairs(G2, P2, FC.Between, FQ.Overlaps); Pairs(G2, G2, FC.Between, FQ.Overlaps); Pairs(G2, C2, FC.Between, FQ.Overlaps);
-            Pairs(G2, A2, FC.Between, FQ.Overlaps); Pairs(G2, B2, FC.Between, FQ.Overlaps);
-            Pairs(C2, P2, FC.Between, FQ.Overlaps); Pairs(C2, G2, FC.Between, FQ.Overlaps); Pairs(C2, C2, FC.Between, FQ.Overlaps);
-            Pairs(C2, A2, FC.Between, FQ.Overlaps); Pairs(C2, B2, FC.Between, FQ.Overlaps);
-            Pairs(A2, P2, FC.Between, FQ.Overlaps); Pairs(A2, G2, FC.Between, FQ.Overlaps); Pairs(A2, C2, FC.Between, FQ.Overlaps);
-            Pairs(A2, A2, FC.Between, FQ.Overlaps); Pairs(A2, B2, FC.Between, FQ.Overlaps);
-            Pairs(B2, P2, FC.Between, FQ.Overlaps); Pairs(B2, G2, FC.Between, FQ.Overlaps); Pairs(B2, C2, FC.Between, FQ.Overlaps);
-            Pairs(B2, A2, FC.Between, FQ.Overlaps); Pairs(B2, B2, FC.Between, FQ.Overlaps);
+            Pairs(P2, P2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(P2, G2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(P2, C2, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(P2, A2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(P2, B2, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(G2, P2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(G2, G2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(G2, C2, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(G2, A2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(G2, B2, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(C2, P2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(C2, G2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(C2, C2, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(C2, A2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(C2, B2, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(A2, P2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(A2, G2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(A2, C2, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(A2, A2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(A2, B2, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(B2, P2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(B2, G2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(B2, C2, FC.Between, FC.Distance, FQ.Overlaps);
+            Pairs(B2, A2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(B2, B2, FC.Between, FC.Distance, FQ.Overlaps);
         }
 
         private static void Double3()
@@ -146,16 +146,16 @@ namespace ProximityMonoCheck
             var s = Array.ConvertAll(S3, x => (D.Sphere)x);
             var a = Array.ConvertAll(A3, x => (D.Aabb3)x);
             var b = Array.ConvertAll(B3, x => (D.Obb3)x);
-            Pairs(p, p, DC.Between, DQ.Overlaps); Pairs(p, g, DC.Between, DQ.Overlaps); Pairs(p, s, DC.Between, DQ.Overlaps);
-            Pairs(p, a, DC.Between, DQ.Overlaps); Pairs(p, b, DC.Between, DQ.Overlaps);
-            Pairs(g, p, DC.Between, DQ.Overlaps); Pairs(g, g, DC.Between, DQ.Overlaps); Pairs(g, s, DC.Between, DQ.Overlaps);
-            Pairs(g, a, DC.Between, DQ.Overlaps); Pairs(g, b, DC.Between, DQ.Overlaps);
-            Pairs(s, p, DC.Between, DQ.Overlaps); Pairs(s, g, DC.Between, DQ.Overlaps); Pairs(s, s, DC.Between, DQ.Overlaps);
-            Pairs(s, a, DC.Between, DQ.Overlaps); Pairs(s, b, DC.Between, DQ.Overlaps);
-            Pairs(a, p, DC.Between, DQ.Overlaps); Pairs(a, g, DC.Between, DQ.Overlaps); Pairs(a, s, DC.Between, DQ.Overlaps);
-            Pairs(a, a, DC.Between, DQ.Overlaps); Pairs(a, b, DC.Between, DQ.Overlaps);
-            Pairs(b, p, DC.Between, DQ.Overlaps); Pairs(b, g, DC.Between, DQ.Overlaps); Pairs(b, s, DC.Between, DQ.Overlaps);
-            Pairs(b, a, DC.Between, DQ.Overlaps); Pairs(b, b, DC.Between, DQ.Overlaps);
+            Pairs(p, p, DC.Between, DC.Distance, DQ.Overlaps); Pairs(p, g, DC.Between, DC.Distance, DQ.Overlaps); Pairs(p, s, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(p, a, DC.Between, DC.Distance, DQ.Overlaps); Pairs(p, b, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(g, p, DC.Between, DC.Distance, DQ.Overlaps); Pairs(g, g, DC.Between, DC.Distance, DQ.Overlaps); Pairs(g, s, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(g, a, DC.Between, DC.Distance, DQ.Overlaps); Pairs(g, b, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(s, p, DC.Between, DC.Distance, DQ.Overlaps); Pairs(s, g, DC.Between, DC.Distance, DQ.Overlaps); Pairs(s, s, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(s, a, DC.Between, DC.Distance, DQ.Overlaps); Pairs(s, b, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(a, p, DC.Between, DC.Distance, DQ.Overlaps); Pairs(a, g, DC.Between, DC.Distance, DQ.Overlaps); Pairs(a, s, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(a, a, DC.Between, DC.Distance, DQ.Overlaps); Pairs(a, b, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(b, p, DC.Between, DC.Distance, DQ.Overlaps); Pairs(b, g, DC.Between, DC.Distance, DQ.Overlaps); Pairs(b, s, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(b, a, DC.Between, DC.Distance, DQ.Overlaps); Pairs(b, b, DC.Between, DC.Distance, DQ.Overlaps);
         }
 
         private static void Double2()
@@ -165,22 +165,23 @@ namespace ProximityMonoCheck
             var c = Array.ConvertAll(C2, x => (D.Circle)x);
             var a = Array.ConvertAll(A2, x => (D.Aabb2)x);
             var b = Array.ConvertAll(B2, x => (D.Obb2)x);
-            Pairs(p, p, DC.Between, DQ.Overlaps); Pairs(p, g, DC.Between, DQ.Overlaps); Pairs(p, c, DC.Between, DQ.Overlaps);
-            Pairs(p, a, DC.Between, DQ.Overlaps); Pairs(p, b, DC.Between, DQ.Overlaps);
-            Pairs(g, p, DC.Between, DQ.Overlaps); Pairs(g, g, DC.Between, DQ.Overlaps); Pairs(g, c, DC.Between, DQ.Overlaps);
-            Pairs(g, a, DC.Between, DQ.Overlaps); Pairs(g, b, DC.Between, DQ.Overlaps);
-            Pairs(c, p, DC.Between, DQ.Overlaps); Pairs(c, g, DC.Between, DQ.Overlaps); Pairs(c, c, DC.Between, DQ.Overlaps);
-            Pairs(c, a, DC.Between, DQ.Overlaps); Pairs(c, b, DC.Between, DQ.Overlaps);
-            Pairs(a, p, DC.Between, DQ.Overlaps); Pairs(a, g, DC.Between, DQ.Overlaps); Pairs(a, c, DC.Between, DQ.Overlaps);
-            Pairs(a, a, DC.Between, DQ.Overlaps); Pairs(a, b, DC.Between, DQ.Overlaps);
-            Pairs(b, p, DC.Between, DQ.Overlaps); Pairs(b, g, DC.Between, DQ.Overlaps); Pairs(b, c, DC.Between, DQ.Overlaps);
-            Pairs(b, a, DC.Between, DQ.Overlaps); Pairs(b, b, DC.Between, DQ.Overlaps);
+            Pairs(p, p, DC.Between, DC.Distance, DQ.Overlaps); Pairs(p, g, DC.Between, DC.Distance, DQ.Overlaps); Pairs(p, c, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(p, a, DC.Between, DC.Distance, DQ.Overlaps); Pairs(p, b, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(g, p, DC.Between, DC.Distance, DQ.Overlaps); Pairs(g, g, DC.Between, DC.Distance, DQ.Overlaps); Pairs(g, c, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(g, a, DC.Between, DC.Distance, DQ.Overlaps); Pairs(g, b, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(c, p, DC.Between, DC.Distance, DQ.Overlaps); Pairs(c, g, DC.Between, DC.Distance, DQ.Overlaps); Pairs(c, c, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(c, a, DC.Between, DC.Distance, DQ.Overlaps); Pairs(c, b, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(a, p, DC.Between, DC.Distance, DQ.Overlaps); Pairs(a, g, DC.Between, DC.Distance, DQ.Overlaps); Pairs(a, c, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(a, a, DC.Between, DC.Distance, DQ.Overlaps); Pairs(a, b, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(b, p, DC.Between, DC.Distance, DQ.Overlaps); Pairs(b, g, DC.Between, DC.Distance, DQ.Overlaps); Pairs(b, c, DC.Between, DC.Distance, DQ.Overlaps);
+            Pairs(b, a, DC.Between, DC.Distance, DQ.Overlaps); Pairs(b, b, DC.Between, DC.Distance, DQ.Overlaps);
         }
 
         /// <summary>Both queries on every pairing of a and b. The delegates are the overloads the compiler picked, so they are what coverage counts.</summary>
-        private static void Pairs<TA, TB, TR>(TA[] a, TB[] b, Func<TA, TB, TR> between, Func<TA, TB, bool> overlaps)
+        private static void Pairs<TA, TB, TR, TD>(TA[] a, TB[] b, Func<TA, TB, TR> between, Func<TA, TB, TD> distance, Func<TA, TB, bool> overlaps)
         {
             Called.Add(Signature(between.Method));
+            Called.Add(Signature(distance.Method));
             Called.Add(Signature(overlaps.Method));
             string kinds = $"({typeof(TA).Name}, {typeof(TB).Name})";
             for (int i = 0; i < a.Length; i++)
@@ -188,6 +189,7 @@ namespace ProximityMonoCheck
                 for (int j = 0; j < b.Length; j++)
                 {
                     Line($"Between{kinds} [{i},{j}] {Show(between(a[i], b[j]))}");
+                    Line($"Distance{kinds} [{i},{j}] {Show(distance(a[i], b[j]))}");
                     Line($"Overlaps{kinds} [{i},{j}] {Show(overlaps(a[i], b[j]))}");
                 }
             }
@@ -425,13 +427,13 @@ namespace ProximityMonoCheck
             {
                 expected.AddRange(type.GetConstructors());
                 expected.AddRange(type.GetMethods(BindingFlags.Public | BindingFlags.Static | BindingFlags.DeclaredOnly)
-                    .Where(m => m.Name == "Between" || m.Name == "Overlaps" || m.Name == "Distances" || m.Name.StartsWith("From", StringComparison.Ordinal)));
+                    .Where(m => m.Name == "Between" || (m.Name == "Distance" && type.Name == "ClosestDistance") || m.Name == "Overlaps" || m.Name == "Distances" || m.Name.StartsWith("From", StringComparison.Ordinal)));
                 if (type.IsSubclassOf(typeof(ShapeSet)))
                     expected.AddRange(type.GetMethods(BindingFlags.Public | BindingFlags.Instance | BindingFlags.DeclaredOnly).Where(m => !m.IsSpecialName));
             }
             int queries = expected.Count(m => m.DeclaringType!.Name == "ClosestDistance" || m.DeclaringType.Name == "ProximityQuery");
             int batch = expected.Count(m => m.DeclaringType == typeof(BatchQuery));
-            Line($"public query overloads (Between, Overlaps; float and double): {queries}");
+            Line($"public query overloads (Between, Distance, Overlaps; float and double): {queries}");
             Line($"public batch queries: {batch}; factories, constructors and set members: {expected.Count - queries - batch}");
             foreach (var missing in expected.Select(Signature).Where(s => !Called.Contains(s)).OrderBy(s => s, StringComparer.Ordinal))
                 Fail($"not called by the smoke test: {missing}");

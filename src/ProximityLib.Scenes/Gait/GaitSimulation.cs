@@ -189,9 +189,9 @@ namespace ProximityLib.Scenes.Gait
 
         private float Distance(in FootPose pose, FootPart part) => part switch
         {
-            FootPart.Heel => ClosestDistance.Between(pose.Heel, Ground).Distance,
-            FootPart.Sole => ClosestDistance.Between(pose.Sole, Ground).Distance,
-            _ => ClosestDistance.Between(pose.Toe, Ground).Distance,
+            FootPart.Heel => ClosestDistance.Distance(pose.Heel, Ground),
+            FootPart.Sole => ClosestDistance.Distance(pose.Sole, Ground),
+            _ => ClosestDistance.Distance(pose.Toe, Ground),
         };
 
         private double FootGap(double sample) =>

@@ -102,6 +102,10 @@ namespace ProximityReference.Fuzz
             ? (bool)ProximityLib.ProximityQuery.Overlaps((dynamic)a, (dynamic)b)
             : (bool)Dbl.ProximityQuery.Overlaps((dynamic)a, (dynamic)b);
 
+        private double Distance(object a, object b) => _float
+            ? (double)(float)ProximityLib.ClosestDistance.Distance((dynamic)a, (dynamic)b)
+            : (double)Dbl.ClosestDistance.Distance((dynamic)a, (dynamic)b);
+
         private string N(double x) => Res.N(x, _float);
         private string Show(Res r) => r.Show(_float, _c.Dim);
         private string Units(Dy diff) => $"{Dy.Ratio(Dy.Abs(diff), _unit):G4} U";
@@ -125,6 +129,7 @@ namespace ProximityReference.Fuzz
                     new[] { "var ab = ClosestDistance.Between(a, b);", "var ba = ClosestDistance.Between(b, a);", "bool o = ProximityQuery.Overlaps(a, b);" });
                 return;
             }
+            CheckDistanceOnly(ab, ba);
             bool fineAb = CheckResult(ab, oab, _ca, _cb, 0);
             bool fineBa = CheckResult(ba, oba, _cb, _ca, 1);
             CheckSwap(ab, ba, oab, oba);
@@ -135,6 +140,28 @@ namespace ProximityReference.Fuzz
             }
             if (_exact) CheckExact(ab, ba, oab, oba, fineAb, fineBa);
             if (fineAb) CheckBatch(ab, oab);
+        }
+
+        // ---- (l) the distance-only entry point ----------------------------------------------------------------------
+
+        /// <summary>(l) Distance(a, b) and Distance(b, a) are the Distance of the Between calls, bit for bit, and never throw.</summary>
+        private void CheckDistanceOnly(Res ab, Res ba)
+        {
+            for (int order = 0; order < 2; order++)
+            {
+                string call = order == 0 ? "Distance(a, b)" : "Distance(b, a)";
+                double want = order == 0 ? ab.D : ba.D;
+                double got;
+                try { got = order == 0 ? Distance(_a, _b) : Distance(_b, _a); }
+                catch (Exception e) when (!(e is Microsoft.CSharp.RuntimeBinder.RuntimeBinderException))
+                {
+                    Fail("l distance-only", $"{call} threw {e.GetType().Name}: {e.Message}", new[] { $"var d = ClosestDistance.{call};" });
+                    continue;
+                }
+                if (BitConverter.DoubleToInt64Bits(got) != BitConverter.DoubleToInt64Bits(want))
+                    Fail("l distance-only", $"{call} = {N(got)} but {Orders[order]}.Distance = {N(want)}",
+                        new[] { $"var d = ClosestDistance.{call};", $"var r = ClosestDistance.{Orders[order]};", $"// got {N(got)}, r.Distance {N(want)}" });
+            }
         }
 
         // ---- (a)–(e), (g) for one argument order ------------------------------------------------------------------

@@ -36,6 +36,22 @@ namespace ProximityTests.Pairs
         }
 
         [TestCaseSource(typeof(Gen), nameof(Gen.Pairs))]
+        public void DistanceOnlyIsTheDistanceOfBetween(int dim, Kind ka, Kind kb)
+        {
+            // The distance-only entry point against the oracle, and against Between bit for bit (double and float, both orders).
+            ForEachCase(dim, ka, kb, 4, (i, a, b, r) =>
+            {
+                string at = $"case {i}: {a} vs {b}: {r}";
+                double d = Call.DistanceOnly(a, b);
+                Assert.That(d, Is.EqualTo(Expected(a, b, i)).Within(1e-8 * Gen.Scale(a, b)), at);
+                Assert.That(BitConverter.DoubleToInt64Bits(d), Is.EqualTo(BitConverter.DoubleToInt64Bits(r.D)), at);
+                Assert.That(BitConverter.DoubleToInt64Bits(Call.DistanceOnly(b, a)), Is.EqualTo(BitConverter.DoubleToInt64Bits(Call.Distance(b, a).D)), "swapped, " + at);
+                Assert.That(Call.DistanceOnlyFloat(a, b), Is.EqualTo((float)Call.DistanceFloat(a, b).D), "float, " + at);
+                Assert.That(Call.DistanceOnlyFloat(b, a), Is.EqualTo((float)Call.DistanceFloat(b, a).D), "float swapped, " + at);
+            });
+        }
+
+        [TestCaseSource(typeof(Gen), nameof(Gen.Pairs))]
         public void WitnessPointsRealiseTheDistance(int dim, Kind ka, Kind kb)
         {
             ForEachCase(dim, ka, kb, 1, (i, a, b, r) =>

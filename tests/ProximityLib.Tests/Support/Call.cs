@@ -22,6 +22,8 @@ namespace ProximityTests.Support
     {
         public static Res Distance(TestShape a, TestShape b) => From(Dbl.ClosestDistance.Between((dynamic)a.Double, (dynamic)b.Double));
         public static bool Overlaps(TestShape a, TestShape b) => Dbl.ProximityQuery.Overlaps((dynamic)a.Double, (dynamic)b.Double);
+        public static double DistanceOnly(TestShape a, TestShape b) => Dbl.ClosestDistance.Distance((dynamic)a.Double, (dynamic)b.Double);
+        public static float DistanceOnlyFloat(TestShape a, TestShape b) => ProximityLib.ClosestDistance.Distance((dynamic)a.ToFloat(), (dynamic)b.ToFloat());
         public static Res DistanceFloat(TestShape a, TestShape b) => From(ProximityLib.ClosestDistance.Between((dynamic)a.ToFloat(), (dynamic)b.ToFloat()));
         public static bool OverlapsFloat(TestShape a, TestShape b) => ProximityLib.ProximityQuery.Overlaps((dynamic)a.ToFloat(), (dynamic)b.ToFloat());
 

@@ -271,6 +271,31 @@ namespace ProximityLib.Double
             return new DistanceResult3(-depth, 0, pa, pb, 0, 0);
         }
 
+        /// <summary>
+        /// The distance of <see cref="AabbAabb"/> alone, branch-free per axis: an axis's gap is the larger of its two
+        /// one-sided gaps (at most one is positive), and its push-out the smaller of the two negated. The same operations
+        /// on the same values as <see cref="AxisGap"/> (zero signs included), so the same bits and <paramref name="inRange"/>.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double AabbAabbDistance(Vector3D minA, Vector3D maxA, Vector3D minB, Vector3D maxB, bool planar, out bool inRange)
+        {
+            double ax = minB.X - maxA.X, bx = minA.X - maxB.X;
+            double ay = minB.Y - maxA.Y, by = minA.Y - maxB.Y;
+            double az = minB.Z - maxA.Z, bz = minA.Z - maxB.Z;
+            double gx = Math.Max(Math.Max(ax, bx), 0), gy = Math.Max(Math.Max(ay, by), 0), gz = Math.Max(Math.Max(az, bz), 0);
+            double g2 = gx * gx + gy * gy + gz * gz;
+            if (g2 > 0)
+            {
+                inRange = Range.In(g2);
+                return Math.Sqrt(g2);
+            }
+            double depth = Math.Min(-ax, -bx), my = Math.Min(-ay, -by);
+            if (my < depth) depth = my;
+            if (!planar && Math.Min(-az, -bz) < depth) depth = Math.Min(-az, -bz);
+            inRange = depth >= 0;
+            return -depth;
+        }
+
         /// <summary>One axis of an AABB pair: the gap (if apart), the witness coordinates, and both push-out distances.</summary>
         private readonly struct AxisGap
         {

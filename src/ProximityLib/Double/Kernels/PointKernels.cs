@@ -165,6 +165,56 @@ namespace ProximityLib.Double
             return new PointContact(-depth, 0, box.Origin + box.ToWorldOffset(onFace), box.ToWorldOffset(FaceNormal(face)), 0);
         }
 
+        /// <summary>The distance of <see cref="PointSegment"/> alone, from the same operations (so the same bits) and the same <paramref name="inRange"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double PointSegmentDistance(Vector3D p, Vector3D a, Vector3D b, out bool inRange)
+        {
+            double r2 = PointSegmentResidual(p, a, b, out _, out double dd).LengthSquared;
+            inRange = Range.In(r2) & Range.In(dd);
+            return Math.Sqrt(r2);
+        }
+
+        /// <summary>The distance of <see cref="PointSphere"/> alone (the same operations and <paramref name="inRange"/>).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double PointSphereDistance(Vector3D p, Vector3D center, double radius, out bool inRange)
+        {
+            double r2 = (p - center).LengthSquared;
+            inRange = Range.In(r2);
+            return Math.Sqrt(r2) - radius;
+        }
+
+        /// <summary>The distance of <see cref="PointBox"/> alone (the same operations and <paramref name="inRange"/>).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double PointBoxDistance(Vector3D p, in Box box, out bool inRange)
+        {
+            var q = box.ToLocal(p - box.Origin);
+            var c = new Vector3D(Num.Clamp(q.X, box.Lo.X, box.Hi.X), Num.Clamp(q.Y, box.Lo.Y, box.Hi.Y), Num.Clamp(q.Z, box.Lo.Z, box.Hi.Z));
+            if (q != c)
+            {
+                double d2 = ((p - box.Origin) - box.ToWorldOffset(c)).LengthSquared;
+                inRange = Range.In(d2);
+                return Math.Sqrt(d2);
+            }
+            double depth = NearestFace(q, box.Lo, box.Hi, box.Planar, out _);
+            inRange = depth >= Range.Lo;
+            return -depth;
+        }
+
+        /// <summary>The distance of <see cref="PointAabb"/> alone (the same operations and <paramref name="inRange"/>).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double PointAabbDistance(Vector3D p, Vector3D min, Vector3D max, bool planar, out bool inRange)
+        {
+            var c = new Vector3D(Num.Clamp(p.X, min.X, max.X), Num.Clamp(p.Y, min.Y, max.Y), Num.Clamp(p.Z, min.Z, max.Z));
+            if (p != c)
+            {
+                double d2 = (p - c).LengthSquared;
+                inRange = Range.In(d2);
+                return Math.Sqrt(d2);
+            }
+            inRange = true;
+            return -NearestFace(p, min, max, planar, out _);
+        }
+
         /// <summary>
         /// Point against an axis-aligned box given by its corners. The clamp is exact in world coordinates and the gap is
         /// one subtraction per axis, so this is both the fastest and the most accurate form for AABBs.
@@ -281,6 +331,25 @@ namespace ProximityLib.Double
             // Shapes store no −0 (see Num.NoNegativeZero), so where the centres agree in a coordinate d is +0 in either
             // order and the witnesses' zero signs agree too.
             return new DistanceResult3(dist, dist > 0 ? dist * dist : 0, ca + n * ra, cb - n * rb, 0, 0);
+        }
+
+        /// <summary>The distance of <see cref="PointPoint"/> alone.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double PointPointDistance(Vector3D a, Vector3D b, out bool inRange)
+        {
+            double d2 = (b - a).LengthSquared;
+            inRange = Range.In(d2);
+            return Math.Sqrt(d2);
+        }
+
+        /// <summary>The distance of <see cref="SphereSphere"/> alone (the same operations and <paramref name="inRange"/>).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double SphereSphereDistance(Vector3D ca, double ra, Vector3D cb, double rb, out bool inRange)
+        {
+            double d2 = (cb - ca).LengthSquared;
+            double r = ra + rb;
+            inRange = Range.In(d2) & r <= double.MaxValue;
+            return Math.Sqrt(d2) - r;
         }
 
         /// <summary>Whether p lies in the closed axis-aligned box [min, max].</summary>

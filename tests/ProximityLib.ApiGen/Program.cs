@@ -1,0 +1,333 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Text;
+using System.Text.RegularExpressions;
+
+// dotnet run --project tests/ProximityLib.ApiGen -- sync
+//     write src/ProximityLib/Pairs/<Pair>.g.cs from each hand-written src/ProximityLib/Pairs/<Pair>.cs
+// dotnet run --project tests/ProximityLib.ApiGen -- check
+//     fail (exit 1) when a committed .g.cs differs from what sync would write, or has no hand-written source
+//
+// A pair file holds the pair's double algorithm as internal kernels, and nothing else:
+//   ClosestDistance: DistanceResult Core(A a, B b, out bool inRange)   (summary: the contract, then "Algorithm: …")
+//                    double DistanceCore(A a, B b, out bool inRange)   (optional: the distance alone, the same bits)
+//   ProximityQuery:  bool Core(A a, B b[, out bool inRange])          (summary optional)
+// inRange false sends the call to the rescaling slow path (Wide). Every public overload is generated from these: the
+// double Between/Distance/Overlaps in both argument orders and the float wrappers, which convert, call the same Core
+// and round once. The float layer thus cannot drift from the double one, and a new pair is written once.
+namespace ProximityApiGen
+{
+    internal static class Program
+    {
+        private static int Main(string[] args)
+        {
+            string pairs = Path.Combine(FindRepo(), "src", "ProximityLib", "Pairs");
+            var wanted = new SortedDictionary<string, string>(StringComparer.Ordinal);
+            try
+            {
+                foreach (var file in Directory.GetFiles(pairs, "*.cs").Where(f => !f.EndsWith(".g.cs", StringComparison.Ordinal)).OrderBy(f => f, StringComparer.Ordinal))
+                    wanted[Path.ChangeExtension(file, ".g.cs")] = Generator.Generate(Path.GetFileName(file), File.ReadAllText(file));
+            }
+            catch (FormatException e)
+            {
+                Console.Error.WriteLine($"error: {e.Message}");
+                return 2;
+            }
+            var existing = Directory.GetFiles(pairs, "*.g.cs");
+            switch (args.FirstOrDefault())
+            {
+                case "sync":
+                    foreach (var orphan in existing.Where(f => !wanted.ContainsKey(f))) { File.Delete(orphan); Console.WriteLine($"deleted {Rel(orphan)}"); }
+                    foreach (var (path, text) in wanted)
+                    {
+                        if (File.Exists(path) && File.ReadAllText(path) == text) continue;
+                        File.WriteAllText(path, text);
+                        Console.WriteLine($"wrote {Rel(path)}");
+                    }
+                    Console.WriteLine($"{wanted.Count} pair files in sync");
+                    return 0;
+                case "check":
+                    var problems = existing.Where(f => !wanted.ContainsKey(f)).Select(f => $"{Rel(f)} has no hand-written pair file").ToList();
+                    problems.AddRange(wanted.Where(w => !File.Exists(w.Key) || File.ReadAllText(w.Key) != w.Value).Select(w => $"{Rel(w.Key)} is not what its pair file generates"));
+                    foreach (var p in problems) Console.WriteLine($"api: {p}");
+                    Console.WriteLine(problems.Count == 0
+                        ? $"api: {wanted.Count} generated pair files in sync"
+                        : $"api: {problems.Count} problem(s); run `dotnet run --project tests/ProximityLib.ApiGen -- sync`");
+                    return problems.Count == 0 ? 0 : 1;
+                default:
+                    Console.WriteLine("usage: ProximityLib.ApiGen sync | check");
+                    return 2;
+            }
+        }
+
+        private static string Rel(string path) => Path.GetRelativePath(FindRepo(), path);
+
+        private static string FindRepo()
+        {
+            for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir != null; dir = dir.Parent)
+                if (File.Exists(Path.Combine(dir.FullName, "ProximityLib.sln"))) return dir.FullName;
+            throw new InvalidOperationException("ProximityLib.sln not found above " + AppContext.BaseDirectory);
+        }
+    }
+
+    /// <summary>One shape type of the double API and its float counterpart.</summary>
+    internal sealed class Shape
+    {
+        public readonly string Double, Float, Noun;
+        public readonly int Dim;
+        private readonly bool _vector;
+
+        private Shape(string dbl, string flt, string noun, int dim, bool vector) { Double = dbl; Float = flt; Noun = noun; Dim = dim; _vector = vector; }
+
+        /// <summary>The float argument as the double shape the kernels take: a cast for vectors, the wrapped shape otherwise.</summary>
+        public string FromFloat(string arg) => _vector ? $"(Dbl.{Double}){arg}" : $"{arg}.Inner";
+
+        public static readonly IReadOnlyDictionary<string, Shape> All = new[]
+        {
+            new Shape("Vector3D", "Vector3", "a point", 3, true), new Shape("Vector2D", "Vector2", "a point", 2, true),
+            new Shape("Segment3", "Segment3", "a segment", 3, false), new Shape("Segment2", "Segment2", "a segment", 2, false),
+            new Shape("Sphere", "Sphere", "a sphere", 3, false), new Shape("Circle", "Circle", "a circle", 2, false),
+            new Shape("Aabb3", "Aabb3", "an AABB", 3, false), new Shape("Aabb2", "Aabb2", "an AABB", 2, false),
+            new Shape("Obb3", "Obb3", "an OBB", 3, false), new Shape("Obb2", "Obb2", "an OBB", 2, false),
+        }.ToDictionary(s => s.Double);
+    }
+
+    /// <summary>A kernel found in a pair file: which query, its argument types, whether it is guarded, its summary.</summary>
+    internal sealed class Kernel
+    {
+        public string Query = "", Result = "";
+        public Shape A = null!, B = null!;
+        public bool Guarded;
+        public string? Summary;
+        public int Dim => A.Dim;
+        public string Pair => $"{A.Noun} and {B.Noun} ({Dim}D)";
+        public string SwappedPair => $"{B.Noun} and {A.Noun} ({Dim}D)";
+        public bool SameTypes => A.Double == B.Double;
+    }
+
+    internal static class Generator
+    {
+        private static readonly Regex Declaration = new Regex(
+            @"^\s*internal static (?<result>\w+) (?<name>Core|DistanceCore)\((?<a>\w+) a, (?<b>\w+) b(?<guard>, out bool inRange)?\)");
+        private static readonly Regex Class = new Regex(@"^\s*public static partial class (?<name>\w+)");
+
+        public static string Generate(string fileName, string source)
+        {
+            var kernels = Parse(fileName, source);
+            var between = kernels.Where(k => k.Query == "Between").ToList();
+            var distance = kernels.Where(k => k.Query == "Distance").ToList();
+            var overlaps = kernels.Where(k => k.Query == "Overlaps").ToList();
+            if (between.Count == 0 || overlaps.Count == 0) throw new FormatException($"{fileName}: a pair file needs a ClosestDistance.Core and a ProximityQuery.Core");
+            foreach (var d in distance)
+                if (!between.Any(b => b.A.Double == d.A.Double && b.B.Double == d.B.Double && b.Guarded == d.Guarded))
+                    throw new FormatException($"{fileName}: DistanceCore({d.A.Double}, {d.B.Double}) has no Core of the same types and guard");
+
+            var w = new Writer();
+            w.Line($"// Generated by tests/ProximityLib.ApiGen from {fileName}: do not edit. Edit that file, then run");
+            w.Line("// `dotnet run --project tests/ProximityLib.ApiGen -- sync`. The public overloads of the pair, double and float.");
+            w.Line("using System.Numerics;");
+            w.Line("using System.Runtime.CompilerServices;");
+            w.Line("using Dbl = ProximityLib.Double;");
+            w.Line();
+            w.Open("namespace ProximityLib.Double");
+
+            w.Open("public static partial class ClosestDistance");
+            foreach (var k in between)
+            {
+                w.Doc(k.Summary!);
+                w.Inline();
+                Guarded(w, $"public static {k.Result} Between({k.A.Double} a, {k.B.Double} b)", "Core", k.Guarded, "Slow(a, b)");
+                if (!k.SameTypes)
+                {
+                    w.Doc($"Closest distance between {k.SwappedPair}: the swapped call, with PointA/PointB and parameters swapped.");
+                    w.Inline();
+                    w.Line($"public static {k.Result} Between({k.B.Double} a, {k.A.Double} b) => Between(b, a).Swapped();");
+                }
+            }
+            foreach (var k in between)
+            {
+                var d = distance.FirstOrDefault(x => x.A.Double == k.A.Double && x.B.Double == k.B.Double);
+                w.Doc($"Signed closest distance between {k.Pair} without the witness points: the Distance of <see cref=\"Between({k.A.Double}, {k.B.Double})\"/>, bit for bit.");
+                w.Inline();
+                if (d == null) w.Line($"public static double Distance({k.A.Double} a, {k.B.Double} b) => Between(a, b).Distance;");
+                else Guarded(w, $"public static double Distance({k.A.Double} a, {k.B.Double} b)", "DistanceCore", d.Guarded, "Slow(a, b).Distance");
+                if (!k.SameTypes)
+                {
+                    w.Doc($"Signed closest distance between {k.SwappedPair}: Distance(b, a).");
+                    w.Inline();
+                    w.Line($"public static double Distance({k.B.Double} a, {k.A.Double} b) => Distance(b, a);");
+                }
+            }
+            w.Line();
+            foreach (var k in between.Where(k => k.Guarded))
+            {
+                w.Line("[MethodImpl(MethodImplOptions.NoInlining)]");
+                w.Line($"private static {k.Result} Slow({k.A.Double} a, {k.B.Double} b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));");
+            }
+            w.Close();
+            w.Line();
+
+            w.Open("public static partial class ProximityQuery");
+            foreach (var k in overlaps)
+            {
+                w.Doc(k.Summary ?? $"Whether {k.Pair} touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.");
+                w.Inline();
+                Guarded(w, $"public static bool Overlaps({k.A.Double} a, {k.B.Double} b)", "Core", k.Guarded, "Slow(a, b)");
+                if (!k.SameTypes)
+                {
+                    w.Doc($"Whether {k.SwappedPair} touch or overlap: Overlaps(b, a).");
+                    w.Inline();
+                    w.Line($"public static bool Overlaps({k.B.Double} a, {k.A.Double} b) => Overlaps(b, a);");
+                }
+            }
+            if (overlaps.Any(k => k.Guarded)) w.Line();
+            foreach (var k in overlaps.Where(k => k.Guarded))
+            {
+                w.Line("[MethodImpl(MethodImplOptions.NoInlining)]");
+                w.Line($"private static bool Slow({k.A.Double} a, {k.B.Double} b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));");
+            }
+            w.Close();
+            w.Close();
+            w.Line();
+
+            // The float API: the same kernels on the converted shapes, rounded once. Float magnitudes are far inside the
+            // double fast path's range, so the guard is not needed.
+            w.Open("namespace ProximityLib");
+            w.Open("public static partial class ClosestDistance");
+            foreach (var k in between)
+            {
+                w.Doc(FloatSummary(k));
+                w.Inline();
+                w.Line($"public static {k.Result} Between({k.A.Float} a, {k.B.Float} b) => new {k.Result}(Dbl.ClosestDistance.Core({Args(k)}));");
+                if (!k.SameTypes)
+                {
+                    w.Doc($"Closest distance between {k.SwappedPair}: the swapped call, with PointA/PointB and parameters swapped.");
+                    w.Inline();
+                    w.Line($"public static {k.Result} Between({k.B.Float} a, {k.A.Float} b) => Between(b, a).Swapped();");
+                }
+            }
+            foreach (var k in between)
+            {
+                var d = distance.FirstOrDefault(x => x.A.Double == k.A.Double && x.B.Double == k.B.Double);
+                w.Doc($"Signed closest distance between {k.Pair}, computed in double, without the witness points: the Distance of <see cref=\"Between({k.A.Float}, {k.B.Float})\"/>, bit for bit.");
+                w.Inline();
+                w.Line(d == null
+                    ? $"public static float Distance({k.A.Float} a, {k.B.Float} b) => Between(a, b).Distance;"
+                    : $"public static float Distance({k.A.Float} a, {k.B.Float} b) => (float)Dbl.ClosestDistance.DistanceCore({Args(k)});");
+                if (!k.SameTypes)
+                {
+                    w.Doc($"Signed closest distance between {k.SwappedPair}: Distance(b, a).");
+                    w.Inline();
+                    w.Line($"public static float Distance({k.B.Float} a, {k.A.Float} b) => Distance(b, a);");
+                }
+            }
+            w.Close();
+            w.Line();
+            w.Open("public static partial class ProximityQuery");
+            foreach (var k in overlaps)
+            {
+                w.Doc($"Whether {k.Pair} touch or overlap.");
+                w.Inline();
+                w.Line($"public static bool Overlaps({k.A.Float} a, {k.B.Float} b) => Dbl.ProximityQuery.Core({Args(k)});");
+                if (!k.SameTypes)
+                {
+                    w.Doc($"Whether {k.SwappedPair} touch or overlap.");
+                    w.Inline();
+                    w.Line($"public static bool Overlaps({k.B.Float} a, {k.A.Float} b) => Overlaps(b, a);");
+                }
+            }
+            w.Close();
+            w.Close();
+            return w.ToString();
+        }
+
+        private static string Args(Kernel k) => $"{k.A.FromFloat("a")}, {k.B.FromFloat("b")}" + (k.Guarded ? ", out _" : "");
+
+        /// <summary>The double summary for the float overload: "computed in double", without the algorithm sentence.</summary>
+        private static string FloatSummary(Kernel k)
+        {
+            string s = k.Summary!;
+            int algorithm = s.IndexOf(" Algorithm: ", StringComparison.Ordinal);
+            if (algorithm >= 0) s = s.Substring(0, algorithm);
+            string head = $"Closest distance between {k.Pair}";
+            return head + ", computed in double" + s.Substring(head.Length);
+        }
+
+        private static void Guarded(Writer w, string signature, string core, bool guarded, string slow)
+        {
+            if (!guarded) { w.Line($"{signature} => {core}(a, b);"); return; }
+            w.Open(signature);
+            w.Line($"var r = {core}(a, b, out bool inRange);");
+            w.Line($"return inRange ? r : {slow};");
+            w.Close();
+        }
+
+        private static List<Kernel> Parse(string fileName, string source)
+        {
+            var lines = source.Replace("\r\n", "\n").Split('\n');
+            var kernels = new List<Kernel>();
+            string? cls = null;
+            for (int i = 0; i < lines.Length; i++)
+            {
+                var c = Class.Match(lines[i]);
+                if (c.Success) cls = c.Groups["name"].Value;
+                if (Regex.IsMatch(lines[i], @"^\s*public static (?!partial class)"))
+                    throw new FormatException($"{fileName}:{i + 1}: public overloads are generated; a pair file declares internal kernels only");
+                var m = Declaration.Match(lines[i]);
+                if (!m.Success) continue;
+                if (!Shape.All.TryGetValue(m.Groups["a"].Value, out var a) || !Shape.All.TryGetValue(m.Groups["b"].Value, out var b))
+                    throw new FormatException($"{fileName}:{i + 1}: unknown shape type in {m.Value.Trim()}");
+                if (a.Dim != b.Dim) throw new FormatException($"{fileName}:{i + 1}: {a.Double} and {b.Double} differ in dimension");
+                string name = m.Groups["name"].Value, result = m.Groups["result"].Value;
+                string query = cls switch
+                {
+                    "ClosestDistance" when name == "Core" && result == $"DistanceResult{a.Dim}" => "Between",
+                    "ClosestDistance" when name == "DistanceCore" && result == "double" => "Distance",
+                    "ProximityQuery" when name == "Core" && result == "bool" => "Overlaps",
+                    _ => throw new FormatException($"{fileName}:{i + 1}: {cls}.{name} returning {result} is not a kernel the generator knows"),
+                };
+                var k = new Kernel { Query = query, Result = result, A = a, B = b, Guarded = m.Groups["guard"].Success, Summary = SummaryAbove(lines, i) };
+                if (query == "Between")
+                {
+                    string head = $"Closest distance between {k.Pair}: ";
+                    if (k.Summary == null || !k.Summary.StartsWith(head, StringComparison.Ordinal))
+                        throw new FormatException($"{fileName}:{i + 1}: the Core's summary must start \"{head}\" (it documents the public Between)");
+                }
+                kernels.Add(k);
+            }
+            return kernels;
+        }
+
+        /// <summary>The one-line or multi-line summary of the doc comment above line i (attributes skipped), or null.</summary>
+        private static string? SummaryAbove(string[] lines, int i)
+        {
+            int j = i - 1;
+            while (j >= 0 && lines[j].TrimStart().StartsWith("[", StringComparison.Ordinal)) j--;
+            var doc = new List<string>();
+            for (; j >= 0 && lines[j].TrimStart().StartsWith("///", StringComparison.Ordinal); j--) doc.Insert(0, lines[j].TrimStart().Substring(3).Trim());
+            var m = Regex.Match(string.Join(" ", doc), "<summary>(.*?)</summary>");
+            return m.Success ? m.Groups[1].Value.Trim() : null;
+        }
+    }
+
+    /// <summary>Indented C# text, four spaces a level, "\n" line ends.</summary>
+    internal sealed class Writer
+    {
+        private readonly StringBuilder _text = new StringBuilder();
+        private int _depth;
+
+        public void Line(string line = "")
+        {
+            if (line.Length > 0) _text.Append(' ', 4 * _depth).Append(line);
+            _text.Append('\n');
+        }
+
+        public void Open(string header) { Line(header); Line("{"); _depth++; }
+        public void Close() { _depth--; Line("}"); }
+        public void Doc(string summary) => Line($"/// <summary>{summary}</summary>");
+        public void Inline() => Line("[MethodImpl(MethodImplOptions.AggressiveInlining)]");
+        public override string ToString() => _text.ToString();
+    }
+}
