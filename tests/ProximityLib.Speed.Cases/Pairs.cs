@@ -10,11 +10,8 @@ using FQ = ProximityLib.ProximityQuery;
 namespace ProximitySpeed
 {
     // Every pair of the library, float and double API, 3D and 2D, in the argument order the inputs give (the swapped
-    // overloads are the same kernel with the result's points swapped). One line per pair.
-    //
-    // The distance-only entry point, once the library has it, goes in a file DistanceOnly.cs, one line per pair:
-    //   [Case(Library, Precision.Float, "3D sphere–sphere")] public readonly struct F3SphereSphereDistance : IDistance<F.Sphere, F.Sphere> { public double Distance(in F.Sphere a, in F.Sphere b) => FC.Distance(a, b); }
-    // The report shows "n/a" for a pair that has none; an A/B build against a version without it leaves the file out.
+    // overloads are the same kernel with the result's points swapped). One line per pair. The distance-only entry point,
+    // ClosestDistance.Distance, is in DistanceOnly.cs (left out of builds against a library version without it).
     [Case(Library, Precision.Float, "3D point–point")] public readonly struct F3PointPoint : IBetween<Vector3, Vector3>, IOverlap<Vector3, Vector3> { public double Between(in Vector3 a, in Vector3 b) => Fold.Of(FC.Between(a, b)); public bool Overlaps(in Vector3 a, in Vector3 b) => FQ.Overlaps(a, b); }
     [Case(Library, Precision.Float, "3D point–segment")] public readonly struct F3PointSegment : IBetween<Vector3, F.Segment3>, IOverlap<Vector3, F.Segment3> { public double Between(in Vector3 a, in F.Segment3 b) => Fold.Of(FC.Between(a, b)); public bool Overlaps(in Vector3 a, in F.Segment3 b) => FQ.Overlaps(a, b); }
     [Case(Library, Precision.Float, "3D point–sphere")] public readonly struct F3PointSphere : IBetween<Vector3, F.Sphere>, IOverlap<Vector3, F.Sphere> { public double Between(in Vector3 a, in F.Sphere b) => Fold.Of(FC.Between(a, b)); public bool Overlaps(in Vector3 a, in F.Sphere b) => FQ.Overlaps(a, b); }

@@ -10,7 +10,7 @@ namespace ProximitySpeed
     public sealed class Options
     {
         public List<Mode> Modes { get; set; } = new List<Mode> { Mode.Pgo };
-        public int Processes { get; set; } = 3;
+        public int Processes { get; set; } = 5;
         public int Rounds { get; set; } = 41;
         public double SampleMs { get; set; } = 1;
         public string Distribution { get; set; } = "mixed";
@@ -18,6 +18,7 @@ namespace ProximitySpeed
         public string? Against { get; set; }
         public string Out { get; set; } = "docs";
         public string? Save { get; set; }
+        public string? Previous { get; set; }
     }
 
     public static class Program
@@ -42,13 +43,14 @@ namespace ProximitySpeed
             options:
               --modes pgo,nopgo,mono   runtimes (quick, run, ab); pgo = .NET 10 default, nopgo = DOTNET_TieredPGO=0,
                                        mono = the sources compiled against Mono's class libraries, run by mono
-              --processes N            processes per mode (default 3)
+              --processes N            processes per mode (default 5)
               --rounds N               rounds per process (default 41)
               --sample-ms X            CPU time per sample (default 1)
               --distribution D         mixed (default), apart or overlapping
               --filter TEXT            only cases whose group or name contains TEXT, e.g. "3D sphere–OBB"
               --out DIR                where report writes (default docs)
               --save FILE              run, report: also write every case's median per mode to FILE (for compare)
+              --previous FILE          report: state in the report how far its medians are from FILE's (an earlier --save)
             """;
 
         public static int Main(string[] args)
@@ -83,12 +85,14 @@ namespace ProximitySpeed
                         case "report":
                             {
                                 options.Modes = Mode.All.ToList();
+                                if (options.Previous != null && !File.Exists(options.Previous))
+                                    throw new ArgumentException($"--previous: no file '{options.Previous}' (write one with --save)");
                                 string load = Measurement.Load();
                                 Console.Error.WriteLine($"load before: {load}");
                                 string old = Builds.Old(BatchReference, Path.Combine(work, "old"));
                                 var m = Measurement.Run(options, work, old, "batch");
                                 if (options.Save != null) Saved.Write(m, options.Save);
-                                Report.Write(m, options.Out, load);
+                                Report.Write(m, options.Out, load, options.Previous == null ? null : Saved.Compare(options.Previous, m));
                                 Console.WriteLine($"wrote {Path.Combine(options.Out, "performance.md")} and performance.png in {m.Elapsed.TotalMinutes:0.0} min");
                                 return 0;
                             }
@@ -175,6 +179,7 @@ namespace ProximitySpeed
                     case "--against": o.Against = Value(); break;
                     case "--out": o.Out = Value(); break;
                     case "--save": o.Save = Value(); break;
+                    case "--previous": o.Previous = Value(); break;
                     default: throw new ArgumentException($"unknown option '{args[i]}'");
                 }
             }

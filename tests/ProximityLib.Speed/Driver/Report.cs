@@ -126,7 +126,8 @@ namespace ProximitySpeed
     /// <summary>docs/performance.md and the speed-against-error plot from a measurement in every mode.</summary>
     public static class Report
     {
-        public static void Write(Measurement m, string dir, string loadBefore)
+        /// <summary><paramref name="reproduced"/>: how far the medians are from an earlier run's (Saved.Compare), if one was given.</summary>
+        public static void Write(Measurement m, string dir, string loadBefore, string? reproduced)
         {
             Directory.CreateDirectory(dir);
             var accuracy = Accuracy.Read(Path.Combine(Builds.Root, "docs", "accuracy.md"));
@@ -144,6 +145,12 @@ namespace ProximitySpeed
                               $"warm-up passes {string.Join("/", m.Runs[mode].Select(r => r.WarmUpPasses))}.");
             md.AppendLine($"- {m.Options.Rounds} rounds per process, samples of about {m.Options.SampleMs} ms of CPU time, " +
                           $"{Inputs.Count} input pairs per query ({m.Options.Distribution}: half apart, half overlapping, shuffled).");
+            if (reproduced != null)
+            {
+                md.AppendLine("- Reproducibility: every case's median against an earlier run of the same command on the same machine, relative " +
+                              "difference per runtime:");
+                foreach (var line in reproduced.Split('\n', StringSplitOptions.RemoveEmptyEntries)) md.AppendLine("  - " + line);
+            }
             md.AppendLine();
             md.AppendLine("## What holds where");
             md.AppendLine();

@@ -89,23 +89,37 @@ namespace ProximitySpeed
                 .ToDictionary(f => (f[0], f[1]), f => double.Parse(f[2], CultureInfo.InvariantCulture));
 
         /// <summary>
-        /// Per mode: how many cases both files have, the largest and the 90th-percentile relative difference |b − a| / a of
-        /// their medians, how many differ by more than 10%, and the ten that differ most.
+        /// Per mode: how many cases both files have, the largest, 90th-percentile and median relative difference |b − a| / a
+        /// of their medians, how many differ by more than 10%, and the ten that differ most.
         /// </summary>
-        public static string Compare(string a, string b)
+        public static string Compare(string a, string b) => Format(Differences(Read(a), Read(b)), 10);
+
+        /// <summary>The same comparison between a saved file and a measurement (report --previous); one line per mode.</summary>
+        public static string Compare(string previous, Measurement m)
         {
-            var x = Read(a);
-            var y = Read(b);
+            var now = new Dictionary<(string Mode, string Key), double>();
+            foreach (var mode in m.Modes)
+                foreach (var key in m.Keys(mode))
+                    if (m.Time(mode, key) is Spread s) now[(mode.Name, key)] = s.Median;
+            return Format(Differences(Read(previous), now), 1);
+        }
+
+        private static List<(string Mode, List<(string Key, double Diff)> Diffs)> Differences(
+            Dictionary<(string Mode, string Key), double> x, Dictionary<(string Mode, string Key), double> y) =>
+            x.Keys.Select(k => k.Mode).Distinct()
+                .Select(mode => (mode, x.Where(kv => kv.Key.Mode == mode && y.ContainsKey(kv.Key))
+                    .Select(kv => (kv.Key.Key, Diff: (y[kv.Key] - kv.Value) / kv.Value)).OrderByDescending(t => Math.Abs(t.Diff)).ToList()))
+                .Where(t => t.Item2.Count > 0).ToList();
+
+        private static string Format(List<(string Mode, List<(string Key, double Diff)> Diffs)> all, int worst)
+        {
             var text = new StringBuilder();
-            foreach (var mode in x.Keys.Select(k => k.Mode).Distinct())
+            foreach (var (mode, d) in all)
             {
-                var d = x.Where(kv => kv.Key.Mode == mode && y.ContainsKey(kv.Key))
-                    .Select(kv => (kv.Key.Key, Diff: (y[kv.Key] - kv.Value) / kv.Value)).OrderByDescending(t => Math.Abs(t.Diff)).ToList();
-                if (d.Count == 0) continue;
                 var abs = d.Select(t => Math.Abs(t.Diff)).OrderBy(v => v).ToList();
                 text.AppendLine($"{mode}: {d.Count} cases, max |difference| {abs[^1] * 100:0.0}%, 90th percentile {abs[(int)(0.9 * (abs.Count - 1))] * 100:0.0}%, " +
-                                $"median {Stats.Median(abs) * 100:0.0}%, {abs.Count(v => v > 0.10)} above 10%");
-                foreach (var (key, diff) in d.Take(10)) text.AppendLine($"  {diff * 100,+7:+0.0;-0.0}%  {key}");
+                                $"median {Stats.Median(abs) * 100:0.0}%, {abs.Count(v => v > 0.10)} above 10%; largest: " +
+                                string.Join(", ", d.Take(worst).Select(t => $"{t.Diff * 100:+0.0;-0.0}% {t.Key}")));
             }
             return text.ToString();
         }
