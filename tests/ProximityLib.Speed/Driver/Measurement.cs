@@ -42,13 +42,15 @@ namespace ProximitySpeed
     /// <summary>One probe process: what it reported and how long it took.</summary>
     public sealed class ProbeRun
     {
-        public ProbeRun(Mode mode, string runtime, string clock, int warmUpPasses, Dictionary<string, CaseRun> cases, TimeSpan elapsed)
+        public ProbeRun(Mode mode, string runtime, string clock, string vector, int warmUpPasses, Dictionary<string, CaseRun> cases, TimeSpan elapsed)
         {
-            Mode = mode; Runtime = runtime; Clock = clock; WarmUpPasses = warmUpPasses; Cases = cases; Elapsed = elapsed;
+            Mode = mode; Runtime = runtime; Clock = clock; Vector = vector; WarmUpPasses = warmUpPasses; Cases = cases; Elapsed = elapsed;
         }
         public Mode Mode { get; }
         public string Runtime { get; }
         public string Clock { get; }
+        /// <summary>"accelerated, 8 float lanes": Vector&lt;T&gt; in that runtime, which the batch queries run on.</summary>
+        public string Vector { get; }
         public int WarmUpPasses { get; }
         /// <summary>By key, "group | name".</summary>
         public Dictionary<string, CaseRun> Cases { get; }
@@ -56,7 +58,7 @@ namespace ProximitySpeed
 
         public static ProbeRun Parse(Mode mode, string output, TimeSpan elapsed)
         {
-            string runtime = "", clock = "";
+            string runtime = "", clock = "", vector = "";
             int passes = 0;
             var cases = new Dictionary<string, CaseRun>();
             foreach (var line in output.Split('\n'))
@@ -64,13 +66,14 @@ namespace ProximitySpeed
                 var f = line.Split('\t');
                 if (f[0] == "# runtime") runtime = f[1];
                 else if (f[0] == "# clock") clock = f[1];
+                else if (f[0] == "# vector") vector = f[1];
                 else if (f[0] == "# warm-up passes") passes = int.Parse(f[1], CultureInfo.InvariantCulture);
                 else if (f[0] == "case")
                     cases[Measurement.Key(f[1], f[2])] = new CaseRun(f[1], f[2], double.Parse(f[4], CultureInfo.InvariantCulture),
                         f[5].Split(' ').Select(x => double.Parse(x, CultureInfo.InvariantCulture)).ToArray());
             }
             if (cases.Count == 0) throw new IOException($"the {mode.Name} probe reported no cases:\n{output}");
-            return new ProbeRun(mode, runtime, clock, passes, cases, elapsed);
+            return new ProbeRun(mode, runtime, clock, vector, passes, cases, elapsed);
         }
     }
 

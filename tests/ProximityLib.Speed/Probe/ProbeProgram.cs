@@ -161,6 +161,8 @@ namespace ProximitySpeed
             var output = new StringBuilder();
             output.Append("# runtime\t").Append(System.Runtime.InteropServices.RuntimeInformation.FrameworkDescription).Append('\n');
             output.Append("# clock\t").Append(Clock.Kind).Append('\n');
+            output.Append("# vector\t").Append(System.Numerics.Vector.IsHardwareAccelerated ? "accelerated" : "not accelerated")
+                .Append(", ").Append(System.Numerics.Vector<float>.Count).Append(" float lanes").Append('\n');
             output.Append("# warm-up passes\t").Append(passes).Append('\n');
             foreach (var c in cases)
             {
