@@ -357,14 +357,24 @@ namespace ProximitySpeed
                 sc.LegendText = label;
                 sc.MarkerSize = 8;
             }
-            plt.Axes.Bottom.TickGenerator = new ScottPlot.TickGenerators.NumericAutomatic { LabelFormatter = v => $"1e{v:0}" };
-            plt.Axes.Left.TickGenerator = new ScottPlot.TickGenerators.NumericAutomatic { LabelFormatter = v => $"{Math.Pow(10, v):0.#} ns" };
+            // Log axes drawn as linear axes of log10 values, so the ticks are set by hand: every decade of error, and
+            // 1-2-5 steps of time.
+            var all = series.Values.SelectMany(v => v).ToList();
+            if (all.Count > 0)
+            {
+                var xs = Enumerable.Range((int)Math.Floor(all.Min(p => p.X)), (int)Math.Ceiling(all.Max(p => p.X)) - (int)Math.Floor(all.Min(p => p.X)) + 1)
+                    .Select(d => (double)d).ToArray();
+                plt.Axes.Bottom.SetTicks(xs, xs.Select(d => $"1e{d:0}").ToArray());
+                var ys = Enumerable.Range(-2, 8).SelectMany(d => new[] { 1.0, 2, 5 }.Select(k => k * Math.Pow(10, d)))
+                    .Where(t => Math.Log10(t) >= all.Min(p => p.Y) - 0.2 && Math.Log10(t) <= all.Max(p => p.Y) + 0.2).ToArray();
+                plt.Axes.Left.SetTicks(ys.Select(Math.Log10).ToArray(), ys.Select(t => $"{t:0.##} ns").ToArray());
+            }
             plt.XLabel("max relative error E·u (log; accuracy.md)");
             plt.YLabel($"time per distance query, {mode.Title} (log)");
             plt.Title("ProximityLib: speed against error, one point per method per query");
-            // Upper centre: the empty band between the double and float errors (upper right hides the slow float box queries).
-            plt.ShowLegend(ScottPlot.Alignment.UpperCenter);
-            plt.SavePng(file, 900, 560);
+            // Beside the axes: inside them, the legend hid points.
+            plt.ShowLegend(ScottPlot.Edge.Right);
+            plt.SavePng(file, 1200, 600);
         }
     }
 
