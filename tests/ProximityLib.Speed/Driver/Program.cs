@@ -121,9 +121,10 @@ namespace ProximitySpeed
                     if (Directory.Exists(work)) Directory.Delete(work, true);
                 }
             }
-            catch (Exception e) when (e is ArgumentException || e is IOException || e is FormatException)
+            catch (Exception e)
             {
-                Console.Error.WriteLine("error: " + e.Message);
+                // Bad input and failed builds or probes name themselves; anything else is named by its type. No stack trace.
+                Console.Error.WriteLine("error: " + (e is ArgumentException || e is IOException || e is FormatException ? "" : e.GetType().Name + ": ") + e.Message);
                 return 2;
             }
         }

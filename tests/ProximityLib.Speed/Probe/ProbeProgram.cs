@@ -33,9 +33,11 @@ namespace ProximitySpeed
         public static int Main(string[] args)
         {
             try { return Run(args); }
-            catch (Exception e) when (e is ArgumentException || e is System.IO.IOException || e is TargetInvocationException)
+            catch (Exception e)
             {
-                Console.Error.WriteLine("error: " + (e is TargetInvocationException t && t.InnerException != null ? t.InnerException.Message : e.Message));
+                // One line, no stack trace: a case that throws while timing is named by its exception (quick names the case).
+                var inner = e is TargetInvocationException t && t.InnerException != null ? t.InnerException : e;
+                Console.Error.WriteLine("error: " + (inner is ArgumentException || inner is System.IO.IOException ? "" : inner.GetType().Name + ": ") + inner.Message);
                 return 2;
             }
         }
