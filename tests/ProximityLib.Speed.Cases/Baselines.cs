@@ -28,6 +28,8 @@ namespace ProximitySpeed
         public SegmentD(double px, double py, double pz, double qx, double qy, double qz) { PX = px; PY = py; PZ = pz; QX = qx; QY = qy; QZ = qz; }
     }
     public readonly struct Segment2D { public readonly double PX, PY, QX, QY; public Segment2D(double px, double py, double qx, double qy) { PX = px; PY = py; QX = qx; QY = qy; } }
+    public readonly struct CircleF { public readonly Vector2 Center; public readonly float Radius; public CircleF(Vector2 c, float r) { Center = c; Radius = r; } }
+    public readonly struct CircleD { public readonly double X, Y, R; public CircleD(double x, double y, double r) { X = x; Y = y; R = r; } }
 
     // ---- float (System.Numerics) ----
 
@@ -49,6 +51,53 @@ namespace ProximitySpeed
         {
             float r = a.Radius + b.Radius;
             return Vector3.DistanceSquared(a.Center, b.Center) <= r * r;
+        }
+    }
+
+    /// <summary>|a − b|; the points themselves are the witnesses; overlap when they are equal.</summary>
+    [Case(Baseline, Precision.Float, "3D point–point")]
+    public readonly struct PointPointF : IBetween<Vector3, Vector3>, IDistance<Vector3, Vector3>, IOverlap<Vector3, Vector3>
+    {
+        public double Distance(in Vector3 a, in Vector3 b) => Vector3.Distance(a, b);
+        public double Between(in Vector3 a, in Vector3 b) => Fold.Of(Vector3.Distance(a, b), a, b);
+        public bool Overlaps(in Vector3 a, in Vector3 b) => a == b;
+    }
+
+    /// <summary>|p − c| − r; the sphere's witness along the line from its center to the point; overlap when |p − c|² ≤ r².</summary>
+    [Case(Baseline, Precision.Float, "3D point–sphere")]
+    public readonly struct PointSphereF : IBetween<Vector3, SphereF>, IDistance<Vector3, SphereF>, IOverlap<Vector3, SphereF>
+    {
+        public double Distance(in Vector3 p, in SphereF s) => Vector3.Distance(p, s.Center) - s.Radius;
+
+        public double Between(in Vector3 p, in SphereF s)
+        {
+            var d = p - s.Center;
+            float length = d.Length();
+            var n = length > 0 ? d / length : Vector3.UnitX;
+            return Fold.Of(length - s.Radius, p, s.Center + n * s.Radius);
+        }
+
+        public bool Overlaps(in Vector3 p, in SphereF s) => Vector3.DistanceSquared(p, s.Center) <= s.Radius * s.Radius;
+    }
+
+    /// <summary>The sphere–sphere formulas in the plane.</summary>
+    [Case(Baseline, Precision.Float, "2D circle–circle")]
+    public readonly struct CircleCircleF : IBetween<CircleF, CircleF>, IDistance<CircleF, CircleF>, IOverlap<CircleF, CircleF>
+    {
+        public double Distance(in CircleF a, in CircleF b) => Vector2.Distance(a.Center, b.Center) - a.Radius - b.Radius;
+
+        public double Between(in CircleF a, in CircleF b)
+        {
+            var d = b.Center - a.Center;
+            float length = d.Length();
+            var n = length > 0 ? d / length : Vector2.UnitX;
+            return Fold.Of(length - a.Radius - b.Radius, a.Center + n * a.Radius, b.Center - n * b.Radius);
+        }
+
+        public bool Overlaps(in CircleF a, in CircleF b)
+        {
+            float r = a.Radius + b.Radius;
+            return Vector2.DistanceSquared(a.Center, b.Center) <= r * r;
         }
     }
 
@@ -230,6 +279,77 @@ namespace ProximitySpeed
         {
             double dx = b.X - a.X, dy = b.Y - a.Y, dz = b.Z - a.Z, r = a.R + b.R;
             return dx * dx + dy * dy + dz * dz <= r * r;
+        }
+    }
+
+    /// <summary>|a − b|; the points themselves are the witnesses; overlap when they are equal.</summary>
+    [Case(Baseline, Precision.Double, "3D point–point")]
+    public readonly struct PointPointD : IBetween<PointD, PointD>, IDistance<PointD, PointD>, IOverlap<PointD, PointD>
+    {
+        public double Distance(in PointD a, in PointD b)
+        {
+            double dx = a.X - b.X, dy = a.Y - b.Y, dz = a.Z - b.Z;
+            return Math.Sqrt(dx * dx + dy * dy + dz * dz);
+        }
+
+        public double Between(in PointD a, in PointD b)
+        {
+            double dx = a.X - b.X, dy = a.Y - b.Y, dz = a.Z - b.Z;
+            return Fold.Of(Math.Sqrt(dx * dx + dy * dy + dz * dz), a.X, a.Y, a.Z, b.X, b.Y, b.Z);
+        }
+
+        public bool Overlaps(in PointD a, in PointD b) => a.X == b.X && a.Y == b.Y && a.Z == b.Z;
+    }
+
+    /// <summary>|p − c| − r; the sphere's witness along the line from its center to the point; overlap when |p − c|² ≤ r².</summary>
+    [Case(Baseline, Precision.Double, "3D point–sphere")]
+    public readonly struct PointSphereD : IBetween<PointD, SphereD>, IDistance<PointD, SphereD>, IOverlap<PointD, SphereD>
+    {
+        public double Distance(in PointD p, in SphereD s)
+        {
+            double dx = p.X - s.X, dy = p.Y - s.Y, dz = p.Z - s.Z;
+            return Math.Sqrt(dx * dx + dy * dy + dz * dz) - s.R;
+        }
+
+        public double Between(in PointD p, in SphereD s)
+        {
+            double dx = p.X - s.X, dy = p.Y - s.Y, dz = p.Z - s.Z;
+            double length = Math.Sqrt(dx * dx + dy * dy + dz * dz);
+            double nx = 1, ny = 0, nz = 0;
+            if (length > 0) { nx = dx / length; ny = dy / length; nz = dz / length; }
+            return Fold.Of(length - s.R, p.X, p.Y, p.Z, s.X + nx * s.R, s.Y + ny * s.R, s.Z + nz * s.R);
+        }
+
+        public bool Overlaps(in PointD p, in SphereD s)
+        {
+            double dx = p.X - s.X, dy = p.Y - s.Y, dz = p.Z - s.Z;
+            return dx * dx + dy * dy + dz * dz <= s.R * s.R;
+        }
+    }
+
+    /// <summary>The sphere–sphere formulas in the plane.</summary>
+    [Case(Baseline, Precision.Double, "2D circle–circle")]
+    public readonly struct CircleCircleD : IBetween<CircleD, CircleD>, IDistance<CircleD, CircleD>, IOverlap<CircleD, CircleD>
+    {
+        public double Distance(in CircleD a, in CircleD b)
+        {
+            double dx = b.X - a.X, dy = b.Y - a.Y;
+            return Math.Sqrt(dx * dx + dy * dy) - a.R - b.R;
+        }
+
+        public double Between(in CircleD a, in CircleD b)
+        {
+            double dx = b.X - a.X, dy = b.Y - a.Y;
+            double length = Math.Sqrt(dx * dx + dy * dy);
+            double nx = 1, ny = 0;
+            if (length > 0) { nx = dx / length; ny = dy / length; }
+            return Fold.Of(length - a.R - b.R, a.X + nx * a.R, a.Y + ny * a.R, b.X - nx * b.R, b.Y - ny * b.R);
+        }
+
+        public bool Overlaps(in CircleD a, in CircleD b)
+        {
+            double dx = b.X - a.X, dy = b.Y - a.Y, r = a.R + b.R;
+            return dx * dx + dy * dy <= r * r;
         }
     }
 

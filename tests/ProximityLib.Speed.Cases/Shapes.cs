@@ -39,6 +39,8 @@ namespace ProximitySpeed
             [typeof(BoxF)] = v => new BoxF(F3(v, 0), Vector3.Max(F3(v, 0), F3(v, 3))),
             [typeof(SegmentF)] = v => new SegmentF(F3(v, 0), F3(v, 3)),
             [typeof(Segment2F)] = v => new Segment2F(F2(v, 0), F2(v, 2)),
+            [typeof(CircleF)] = v => new CircleF(F2(v, 0), (float)v[2]),
+            [typeof(CircleD)] = v => new CircleD(v[0], v[1], v[2]),
             [typeof(PointD)] = v => new PointD(v[0], v[1], v[2]),
             [typeof(SphereD)] = v => new SphereD(v[0], v[1], v[2], v[3]),
             [typeof(BoxD)] = v => new BoxD(v[0], v[1], v[2], v[3], v[4], v[5]),

@@ -96,8 +96,8 @@ namespace ProximitySpeed
         }
 
         /// <summary>
-        /// Every case twice; the second call must not allocate, and no call may throw (one line per failing case, exit
-        /// code 1). Proves the cases run; measures nothing.
+        /// Every case twice; the second call must not allocate, no call may throw, and every baseline must give the
+        /// library's answer (one line per failing case, exit code 1). Proves the cases run; measures nothing.
         /// </summary>
         private static int Once(List<Case> cases)
         {
@@ -122,9 +122,38 @@ namespace ProximitySpeed
                     throwing++;
                 }
             }
+            int differing = Agreement(cases);
             Console.WriteLine(cases.Count + " cases executed on " + System.Runtime.InteropServices.RuntimeInformation.FrameworkDescription + ", " +
-                              allocating + " allocating, " + throwing + " throwing (clock: " + Clock.Kind + ")");
-            return allocating == 0 && throwing == 0 ? 0 : 1;
+                              allocating + " allocating, " + throwing + " throwing, " + differing + " baselines disagreeing with the library (clock: " + Clock.Kind + ")");
+            return allocating == 0 && throwing == 0 && differing == 0 ? 0 : 1;
+        }
+
+        /// <summary>
+        /// A baseline must give the library's answer: over one pass of a group's pairs, the sum of the distance-only
+        /// distances may differ by rounding only (1e-4 per pair: a wrong sign or formula moves it by far more), and the
+        /// overlap counts by at most 2 (pairs that touch within rounding). Returns how many baselines disagree.
+        /// </summary>
+        private static int Agreement(List<Case> cases)
+        {
+            int differing = 0;
+            foreach (var g in cases.GroupBy(c => c.Group))
+                foreach (var op in new[] { "Distance", "Overlaps" })
+                {
+                    var library = g.FirstOrDefault(c => c.Name == "library " + op);
+                    var baseline = g.FirstOrDefault(c => c.Name == "baseline " + op);
+                    if (library == null || baseline == null) continue;
+                    double a, b;
+                    try { a = library.Run(1); b = baseline.Run(1); }
+                    catch (Exception) { continue; } // already reported as throwing
+                    double tolerance = op == "Distance" ? 1e-4 * library.Count : 2;
+                    if (Math.Abs(a - b) > tolerance)
+                    {
+                        Console.WriteLine("disagrees with the library: " + g.Key + " | baseline " + op + " (" + b.ToString("R", CultureInfo.InvariantCulture) +
+                                          " against " + a.ToString("R", CultureInfo.InvariantCulture) + " over " + library.Count + " pairs)");
+                        differing++;
+                    }
+                }
+            return differing;
         }
 
         private static int Measure(List<Case> cases, int rounds, double sampleMs, int seed)
