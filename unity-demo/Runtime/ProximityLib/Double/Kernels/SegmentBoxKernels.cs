@@ -170,6 +170,7 @@ namespace ProximityLib.Double
         }
 
         /// <summary>A segment × box-edge direction (unnormalised): the segment projects to p along it, the box to [−r, r].</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static void TryCrossAxis(Vector3D axis, double p, double r, ref double best, ref Vector3D push)
         {
             double len2 = axis.LengthSquared;
