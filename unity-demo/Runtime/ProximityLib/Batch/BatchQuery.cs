@@ -16,6 +16,18 @@ namespace ProximityLib.Batch
     /// </summary>
     public static class BatchQuery
     {
+        /// <summary>
+        /// The most threads one batch call uses, the calling thread included; default <see cref="Environment.ProcessorCount"/>.
+        /// Calls of at least 65,536 shapes are split over the thread pool (same results, no allocation on .NET); 1 keeps
+        /// every call on the calling thread, for callers that already run batches in parallel or must not use the pool.
+        /// Process-wide; <see cref="ArgumentException"/> below 1.
+        /// </summary>
+        public static int MaxDegreeOfParallelism
+        {
+            get => Workers.MaxThreads;
+            set => Workers.MaxThreads = value >= 1 ? value : throw new ArgumentException("the degree of parallelism must be at least 1.", nameof(value));
+        }
+
         /// <summary>Signed distances between spheres a[i] and b[i].</summary>
         public static void Distances(SphereSet a, SphereSet b, Span<float> result) =>
             Runner.Values(new SphereSphere<SphereLanes>(new SphereLanes(a), Paired(a, b), false), b.Count, result);
@@ -124,9 +136,23 @@ namespace ProximityLib.Batch
             return Vector.ConditionalSelect(Vector.GreaterThan(d2, Vector<float>.Zero), Vector.SquareRoot(d2), Runner.Negate(depth)) - r;
         }
 
-        private readonly struct SphereSphere<TS> : IKernel where TS : struct, ISpheres
+        /// <summary>One lane of <see cref="PointBox(Vector{float}, Vector{float}, Vector{float}, Vector{float}, Vector{float}, Vector{float}, Vector{float}, Vector{float}, Vector{float}, Vector{float}, bool)"/>; the depth only inside.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static float PointBox(float px, float py, float pz, float r, float lox, float loy, float loz, float hix, float hiy, float hiz, bool margin)
         {
-            private readonly TS _a;
+            var dx = px - Runner.Clamp(px, lox, hix);
+            var dy = py - Runner.Clamp(py, loy, hiy);
+            var dz = pz - Runner.Clamp(pz, loz, hiz);
+            var d2 = dx * dx + dy * dy + dz * dz;
+            if (margin) return d2 - r * r;
+            if (d2 > 0) return MathF.Sqrt(d2) - r;
+            var depth = Runner.Min(Runner.Min(Runner.Min(px - lox, hix - px), Runner.Min(py - loy, hiy - py)), Runner.Min(pz - loz, hiz - pz));
+            return -depth - r;
+        }
+
+        private struct SphereSphere<TS> : IKernel where TS : struct, ISpheres
+        {
+            private TS _a;
             private readonly SphereSet _b;
             private readonly bool _margin;
             public SphereSphere(TS a, SphereSet b, bool margin) { _a = a; _b = b; _margin = margin; }
@@ -141,11 +167,22 @@ namespace ProximityLib.Batch
                 var r = _a.R(i) + new Vector<float>(_b.R, i);
                 return _margin ? d2 - r * r : Vector.SquareRoot(d2) - r;
             }
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public float Lane(int i)
+            {
+                var dx = _a.XAt(i) - _b.X[i];
+                var dy = _a.YAt(i) - _b.Y[i];
+                var dz = _a.ZAt(i) - _b.Z[i];
+                var d2 = dx * dx + dy * dy + dz * dz;
+                var r = _a.RAt(i) + _b.R[i];
+                return _margin ? d2 - r * r : MathF.Sqrt(d2) - r;
+            }
         }
 
-        private readonly struct SphereAabb<TS> : IKernel where TS : struct, ISpheres
+        private struct SphereAabb<TS> : IKernel where TS : struct, ISpheres
         {
-            private readonly TS _a;
+            private TS _a;
             private readonly AabbSet _b;
             private readonly bool _margin;
             public SphereAabb(TS a, AabbSet b, bool margin) { _a = a; _b = b; _margin = margin; }
@@ -154,11 +191,15 @@ namespace ProximityLib.Batch
             public Vector<float> Compute(int i) => PointBox(_a.X(i), _a.Y(i), _a.Z(i), _a.R(i),
                 new Vector<float>(_b.MinX, i), new Vector<float>(_b.MinY, i), new Vector<float>(_b.MinZ, i),
                 new Vector<float>(_b.MaxX, i), new Vector<float>(_b.MaxY, i), new Vector<float>(_b.MaxZ, i), _margin);
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public float Lane(int i) => PointBox(_a.XAt(i), _a.YAt(i), _a.ZAt(i), _a.RAt(i),
+                _b.MinX[i], _b.MinY[i], _b.MinZ[i], _b.MaxX[i], _b.MaxY[i], _b.MaxZ[i], _margin);
         }
 
-        private readonly struct SphereObb<TS> : IKernel where TS : struct, ISpheres
+        private struct SphereObb<TS> : IKernel where TS : struct, ISpheres
         {
-            private readonly TS _a;
+            private TS _a;
             private readonly ObbSet _b;
             private readonly bool _margin;
             public SphereObb(TS a, ObbSet b, bool margin) { _a = a; _b = b; _margin = margin; }
@@ -178,6 +219,19 @@ namespace ProximityLib.Batch
                 var hz = new Vector<float>(_b.HZ, i);
                 return PointBox(qx, qy, qz, _a.R(i), Runner.Negate(hx), Runner.Negate(hy), Runner.Negate(hz), hx, hy, hz, _margin);
             }
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public float Lane(int i)
+            {
+                var wx = _a.XAt(i) - _b.CX[i];
+                var wy = _a.YAt(i) - _b.CY[i];
+                var wz = _a.ZAt(i) - _b.CZ[i];
+                var qx = wx * _b.XX[i] + wy * _b.XY[i] + wz * _b.XZ[i];
+                var qy = wx * _b.YX[i] + wy * _b.YY[i] + wz * _b.YZ[i];
+                var qz = wx * _b.ZX[i] + wy * _b.ZY[i] + wz * _b.ZZ[i];
+                float hx = _b.HX[i], hy = _b.HY[i], hz = _b.HZ[i];
+                return PointBox(qx, qy, qz, _a.RAt(i), -hx, -hy, -hz, hx, hy, hz, _margin);
+            }
         }
 
         /// <summary>
@@ -190,9 +244,9 @@ namespace ProximityLib.Batch
         /// its partner following, misses the distance by at most δ·sin θ, and by far less when the lines do not meet;
         /// where even that is too much, an endpoint candidate is closer.
         /// </summary>
-        private readonly struct SegmentSegment<TA> : IKernel where TA : struct, ISegments
+        private struct SegmentSegment<TA> : IKernel where TA : struct, ISegments
         {
-            private readonly TA _a;
+            private TA _a;
             private readonly SegmentSet _b;
             public SegmentSegment(TA a, SegmentSet b) { _a = a; _b = b; }
 
@@ -230,6 +284,42 @@ namespace ProximityLib.Batch
                 return Vector.SquareRoot(best);
             }
 
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public float Lane(int i)
+            {
+                _a.EndsAt(i, out var a0, out var a1);
+                float b0x = _b.AX[i], b0y = _b.AY[i], b0z = _b.AZ[i];
+                float d0x = a1.X - a0.X, d0y = a1.Y - a0.Y, d0z = a1.Z - a0.Z;
+                float d1x = _b.BX[i] - b0x, d1y = _b.BY[i] - b0y, d1z = _b.BZ[i] - b0z;
+                float wx = b0x - a0.X, wy = b0y - a0.Y, wz = b0z - a0.Z;
+                var dd0 = d0x * d0x + d0y * d0y + d0z * d0z;
+                var dd1 = d1x * d1x + d1y * d1y + d1z * d1z;
+
+                float nx = d0y * d1z - d0z * d1y, ny = d0z * d1x - d0x * d1z, nz = d0x * d1y - d0y * d1x;
+                var g = PowerOfTwoInverse(dd0 > dd1 ? dd0 : dd1);
+                float ngx = nx * g, ngy = ny * g, ngz = nz * g;
+                var nng = nx * ngx + ny * ngy + nz * ngz;
+                float s = 0;
+                if (nng > 0)
+                {
+                    float cx = wy * d1z - wz * d1y, cy = wz * d1x - wx * d1z, cz = wx * d1y - wy * d1x;
+                    s = Runner.Clamp((cx * ngx + cy * ngy + cz * ngz) / nng, 0, 1);
+                }
+
+                var inv0 = Reciprocal(dd0);
+                var inv1 = Reciprocal(dd1);
+                var best = PointSegment2(d0x * s - wx, d0y * s - wy, d0z * s - wz, d1x, d1y, d1z, inv1);
+                best = Min(best, PointSegment2(-wx, -wy, -wz, d1x, d1y, d1z, inv1));
+                best = Min(best, PointSegment2(d0x - wx, d0y - wy, d0z - wz, d1x, d1y, d1z, inv1));
+                best = Min(best, PointSegment2(wx, wy, wz, d0x, d0y, d0z, inv0));
+                best = Min(best, PointSegment2(wx + d1x, wy + d1y, wz + d1z, d0x, d0y, d0z, inv0));
+                return MathF.Sqrt(best);
+            }
+
+            /// <summary>The scalar lanes' minimum of two squared distances (never −0); NaN wins, as in the vector minimum.</summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static float Min(float a, float b) => a < b || float.IsNaN(a) ? a : b;
+
             /// <summary>
             /// 1/dd for a squared length dd, or 0 below 2^−126, where 1/dd could overflow: such a segment is shorter than
             /// 2^−63, and as a point at its start it is off by far less than u·S in the safe range.
@@ -237,6 +327,9 @@ namespace ProximityLib.Batch
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             private static Vector<float> Reciprocal(Vector<float> dd) =>
                 Vector.ConditionalSelect(Vector.GreaterThanOrEqual(dd, new Vector<float>(MinNormal)), Vector<float>.One / dd, Vector<float>.Zero);
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static float Reciprocal(float dd) => dd >= MinNormal ? 1 / dd : 0;
 
             /// <summary>The smallest normal float, 2^−126.</summary>
             private const float MinNormal = 1.17549435E-38f;
@@ -251,6 +344,9 @@ namespace ProximityLib.Batch
                 Vector.AsVectorSingle(new Vector<int>(0x7F000000) - (Vector.AsVectorInt32(x) & new Vector<int>(0x7F800000)));
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static float PowerOfTwoInverse(float x) => BitConverter.Int32BitsToSingle(0x7F000000 - (BitConverter.SingleToInt32Bits(x) & 0x7F800000));
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
             private static V3 Cross(in V3 a, in V3 b) => new V3(a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X);
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -258,7 +354,7 @@ namespace ProximityLib.Batch
 
             /// <summary>
             /// Squared distance from a point at offset (px, py, pz) from a segment's start to the segment d, given
-            /// <see cref="Reciprocal"/> of its squared length (one division per segment, not per candidate).
+            /// <see cref="Reciprocal(Vector{float})"/> of its squared length (one division per segment, not per candidate).
             /// </summary>
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             private static Vector<float> PointSegment2(Vector<float> px, Vector<float> py, Vector<float> pz, in V3 d, Vector<float> inv)
@@ -266,15 +362,23 @@ namespace ProximityLib.Batch
                 var t = Runner.Clamp((px * d.X + py * d.Y + pz * d.Z) * inv, Vector<float>.Zero, Vector<float>.One);
                 return Residual2(px - d.X * t, py - d.Y * t, pz - d.Z * t);
             }
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static float PointSegment2(float px, float py, float pz, float dx, float dy, float dz, float inv)
+            {
+                var t = Runner.Clamp((px * dx + py * dy + pz * dz) * inv, 0, 1);
+                float rx = px - dx * t, ry = py - dy * t, rz = pz - dz * t;
+                return rx * rx + ry * ry + rz * rz;
+            }
         }
 
         /// <summary>
         /// OBB–OBB separating-axis test without branches: the largest separation over the 15 axes (≤ 0 exactly when no
         /// axis separates). Cross axes project B through the minors of R, as the scalar test does.
         /// </summary>
-        private readonly struct ObbObb<TA> : IKernel where TA : struct, IObbs
+        private struct ObbObb<TA> : IKernel where TA : struct, IObbs
         {
-            private readonly TA _a;
+            private TA _a;
             private readonly ObbSet _b;
             public ObbObb(TA a, ObbSet b) { _a = a; _b = b; }
 
@@ -312,11 +416,51 @@ namespace ProximityLib.Batch
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             private static Vector<float> Cross(Vector<float> tl, Vector<float> ra, Vector<float> h1, Vector<float> m1, Vector<float> h2, Vector<float> m2) =>
                 Vector.Abs(tl) - (ra + h1 * Vector.Abs(m1) + h2 * Vector.Abs(m2));
+
+            /// <summary>The axes' separations as <see cref="Compute"/> forms them, stopping at the first that is not ≤ 0.</summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public float Lane(int i)
+            {
+                _a.LoadAt(i, out var ca, out var ax, out var ay, out var az, out var ha);
+                new ObbLanes(_b).LoadAt(i, out var cb, out var bx, out var by, out var bz, out var hb);
+                var tw = new Vector3(cb.X - ca.X, cb.Y - ca.Y, cb.Z - ca.Z);
+                float tx = Dot(tw, ax), ty = Dot(tw, ay), tz = Dot(tw, az);
+                float r00 = Dot(ax, bx), r01 = Dot(ax, by), r02 = Dot(ax, bz);
+                float r10 = Dot(ay, bx), r11 = Dot(ay, by), r12 = Dot(ay, bz);
+                float r20 = Dot(az, bx), r21 = Dot(az, by), r22 = Dot(az, bz);
+                float q00 = Math.Abs(r00), q01 = Math.Abs(r01), q02 = Math.Abs(r02);
+                float q10 = Math.Abs(r10), q11 = Math.Abs(r11), q12 = Math.Abs(r12);
+                float q20 = Math.Abs(r20), q21 = Math.Abs(r21), q22 = Math.Abs(r22);
+
+                float sep;
+                if (!((sep = Math.Abs(tx) - (ha.X + hb.X * q00 + hb.Y * q01 + hb.Z * q02)) <= 0)) return sep;
+                if (!((sep = Math.Abs(ty) - (ha.Y + hb.X * q10 + hb.Y * q11 + hb.Z * q12)) <= 0)) return sep;
+                if (!((sep = Math.Abs(tz) - (ha.Z + hb.X * q20 + hb.Y * q21 + hb.Z * q22)) <= 0)) return sep;
+                if (!((sep = Math.Abs(tx * r00 + ty * r10 + tz * r20) - (ha.X * q00 + ha.Y * q10 + ha.Z * q20 + hb.X)) <= 0)) return sep;
+                if (!((sep = Math.Abs(tx * r01 + ty * r11 + tz * r21) - (ha.X * q01 + ha.Y * q11 + ha.Z * q21 + hb.Y)) <= 0)) return sep;
+                if (!((sep = Math.Abs(tx * r02 + ty * r12 + tz * r22) - (ha.X * q02 + ha.Y * q12 + ha.Z * q22 + hb.Z)) <= 0)) return sep;
+                if (!((sep = Cross(tz * r10 - ty * r20, ha.Y * q20 + ha.Z * q10, hb.Y, r11 * r20 - r21 * r10, hb.Z, r12 * r20 - r22 * r10)) <= 0)) return sep;
+                if (!((sep = Cross(tz * r11 - ty * r21, ha.Y * q21 + ha.Z * q11, hb.X, r10 * r21 - r20 * r11, hb.Z, r12 * r21 - r22 * r11)) <= 0)) return sep;
+                if (!((sep = Cross(tz * r12 - ty * r22, ha.Y * q22 + ha.Z * q12, hb.X, r10 * r22 - r20 * r12, hb.Y, r11 * r22 - r21 * r12)) <= 0)) return sep;
+                if (!((sep = Cross(tx * r20 - tz * r00, ha.X * q20 + ha.Z * q00, hb.Y, r01 * r20 - r21 * r00, hb.Z, r02 * r20 - r22 * r00)) <= 0)) return sep;
+                if (!((sep = Cross(tx * r21 - tz * r01, ha.X * q21 + ha.Z * q01, hb.X, r00 * r21 - r20 * r01, hb.Z, r02 * r21 - r22 * r01)) <= 0)) return sep;
+                if (!((sep = Cross(tx * r22 - tz * r02, ha.X * q22 + ha.Z * q02, hb.X, r00 * r22 - r20 * r02, hb.Y, r01 * r22 - r21 * r02)) <= 0)) return sep;
+                if (!((sep = Cross(ty * r00 - tx * r10, ha.X * q10 + ha.Y * q00, hb.Y, r11 * r00 - r01 * r10, hb.Z, r12 * r00 - r02 * r10)) <= 0)) return sep;
+                if (!((sep = Cross(ty * r01 - tx * r11, ha.X * q11 + ha.Y * q01, hb.X, r10 * r01 - r00 * r11, hb.Z, r12 * r01 - r02 * r11)) <= 0)) return sep;
+                return Cross(ty * r02 - tx * r12, ha.X * q12 + ha.Y * q02, hb.X, r10 * r02 - r00 * r12, hb.Y, r11 * r02 - r01 * r12);
+            }
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static float Dot(Vector3 a, Vector3 b) => a.X * b.X + a.Y * b.Y + a.Z * b.Z;
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static float Cross(float tl, float ra, float h1, float m1, float h2, float m2) =>
+                Math.Abs(tl) - (ra + h1 * Math.Abs(m1) + h2 * Math.Abs(m2));
         }
 
-        private readonly struct AabbAabb<TA> : IKernel where TA : struct, IAabbs
+        private struct AabbAabb<TA> : IKernel where TA : struct, IAabbs
         {
-            private readonly TA _a;
+            private TA _a;
             private readonly AabbSet _b;
             public AabbAabb(TA a, AabbSet b) { _a = a; _b = b; }
 
@@ -328,6 +472,18 @@ namespace ProximityLib.Batch
                 var gy = Vector.Max(new Vector<float>(_b.MinY, i) - _a.MaxY(i), _a.MinY(i) - new Vector<float>(_b.MaxY, i));
                 var gz = Vector.Max(new Vector<float>(_b.MinZ, i) - _a.MaxZ(i), _a.MinZ(i) - new Vector<float>(_b.MaxZ, i));
                 return Vector.Max(gx, Vector.Max(gy, gz));
+            }
+
+            /// <summary>The same gaps, stopping at the first that is not ≤ 0.</summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public float Lane(int i)
+            {
+                _a.CornersAt(i, out var minX, out var minY, out var minZ, out var maxX, out var maxY, out var maxZ);
+                float gap;
+                if (!((gap = _b.MinX[i] - maxX) <= 0) || !((gap = minX - _b.MaxX[i]) <= 0)) return gap;
+                if (!((gap = _b.MinY[i] - maxY) <= 0) || !((gap = minY - _b.MaxY[i]) <= 0)) return gap;
+                if (!((gap = _b.MinZ[i] - maxZ) <= 0) || !((gap = minZ - _b.MaxZ[i]) <= 0)) return gap;
+                return gap;
             }
         }
     }

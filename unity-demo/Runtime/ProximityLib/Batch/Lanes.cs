@@ -16,6 +16,10 @@ namespace ProximityLib.Batch
         Vector<float> Y(int i);
         Vector<float> Z(int i);
         Vector<float> R(int i);
+        float XAt(int i);
+        float YAt(int i);
+        float ZAt(int i);
+        float RAt(int i);
     }
 
     internal readonly struct SphereLanes : ISpheres
@@ -26,6 +30,10 @@ namespace ProximityLib.Batch
         public Vector<float> Y(int i) => new Vector<float>(_s.Y, i);
         public Vector<float> Z(int i) => new Vector<float>(_s.Z, i);
         public Vector<float> R(int i) => new Vector<float>(_s.R, i);
+        public float XAt(int i) => _s.X[i];
+        public float YAt(int i) => _s.Y[i];
+        public float ZAt(int i) => _s.Z[i];
+        public float RAt(int i) => _s.R[i];
     }
 
     /// <summary>Points are spheres of radius 0 to the kernels.</summary>
@@ -37,16 +45,30 @@ namespace ProximityLib.Batch
         public Vector<float> Y(int i) => new Vector<float>(_s.Y, i);
         public Vector<float> Z(int i) => new Vector<float>(_s.Z, i);
         public Vector<float> R(int i) => Vector<float>.Zero;
+        public float XAt(int i) => _s.X[i];
+        public float YAt(int i) => _s.Y[i];
+        public float ZAt(int i) => _s.Z[i];
+        public float RAt(int i) => 0;
     }
 
     internal readonly struct SphereBroadcast : ISpheres
     {
         private readonly Vector<float> _x, _y, _z, _r;
-        public SphereBroadcast(Vector3 c, float r) { _x = new Vector<float>(c.X); _y = new Vector<float>(c.Y); _z = new Vector<float>(c.Z); _r = new Vector<float>(r); }
+        private readonly Vector3 _c;
+        private readonly float _radius;
+        public SphereBroadcast(Vector3 c, float r)
+        {
+            _x = new Vector<float>(c.X); _y = new Vector<float>(c.Y); _z = new Vector<float>(c.Z); _r = new Vector<float>(r);
+            _c = c; _radius = r;
+        }
         public Vector<float> X(int i) => _x;
         public Vector<float> Y(int i) => _y;
         public Vector<float> Z(int i) => _z;
         public Vector<float> R(int i) => _r;
+        public float XAt(int i) => _c.X;
+        public float YAt(int i) => _c.Y;
+        public float ZAt(int i) => _c.Z;
+        public float RAt(int i) => _radius;
     }
 
     internal interface IAabbs
@@ -57,6 +79,8 @@ namespace ProximityLib.Batch
         Vector<float> MaxX(int i);
         Vector<float> MaxY(int i);
         Vector<float> MaxZ(int i);
+        /// <summary>Box i's corners (min x, y, z, max x, y, z) for the scalar lanes.</summary>
+        void CornersAt(int i, out float minX, out float minY, out float minZ, out float maxX, out float maxY, out float maxZ);
     }
 
     internal readonly struct AabbLanes : IAabbs
@@ -69,15 +93,23 @@ namespace ProximityLib.Batch
         public Vector<float> MaxX(int i) => new Vector<float>(_s.MaxX, i);
         public Vector<float> MaxY(int i) => new Vector<float>(_s.MaxY, i);
         public Vector<float> MaxZ(int i) => new Vector<float>(_s.MaxZ, i);
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void CornersAt(int i, out float minX, out float minY, out float minZ, out float maxX, out float maxY, out float maxZ)
+        {
+            minX = _s.MinX[i]; minY = _s.MinY[i]; minZ = _s.MinZ[i]; maxX = _s.MaxX[i]; maxY = _s.MaxY[i]; maxZ = _s.MaxZ[i];
+        }
     }
 
     internal readonly struct AabbBroadcast : IAabbs
     {
         private readonly Vector<float> _minX, _minY, _minZ, _maxX, _maxY, _maxZ;
+        private readonly Vector3 _min, _max;
         public AabbBroadcast(Vector3 min, Vector3 max)
         {
             _minX = new Vector<float>(min.X); _minY = new Vector<float>(min.Y); _minZ = new Vector<float>(min.Z);
             _maxX = new Vector<float>(max.X); _maxY = new Vector<float>(max.Y); _maxZ = new Vector<float>(max.Z);
+            _min = min; _max = max;
         }
         public Vector<float> MinX(int i) => _minX;
         public Vector<float> MinY(int i) => _minY;
@@ -85,6 +117,12 @@ namespace ProximityLib.Batch
         public Vector<float> MaxX(int i) => _maxX;
         public Vector<float> MaxY(int i) => _maxY;
         public Vector<float> MaxZ(int i) => _maxZ;
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void CornersAt(int i, out float minX, out float minY, out float minZ, out float maxX, out float maxY, out float maxZ)
+        {
+            minX = _min.X; minY = _min.Y; minZ = _min.Z; maxX = _max.X; maxY = _max.Y; maxZ = _max.Z;
+        }
     }
 
     internal interface ISegments
@@ -95,6 +133,8 @@ namespace ProximityLib.Batch
         Vector<float> BX(int i);
         Vector<float> BY(int i);
         Vector<float> BZ(int i);
+        /// <summary>Segment i's endpoints for the scalar lanes.</summary>
+        void EndsAt(int i, out Vector3 a, out Vector3 b);
     }
 
     internal readonly struct SegmentLanes : ISegments
@@ -107,15 +147,24 @@ namespace ProximityLib.Batch
         public Vector<float> BX(int i) => new Vector<float>(_s.BX, i);
         public Vector<float> BY(int i) => new Vector<float>(_s.BY, i);
         public Vector<float> BZ(int i) => new Vector<float>(_s.BZ, i);
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void EndsAt(int i, out Vector3 a, out Vector3 b)
+        {
+            a = new Vector3(_s.AX[i], _s.AY[i], _s.AZ[i]);
+            b = new Vector3(_s.BX[i], _s.BY[i], _s.BZ[i]);
+        }
     }
 
     internal readonly struct SegmentBroadcast : ISegments
     {
         private readonly Vector<float> _ax, _ay, _az, _bx, _by, _bz;
+        private readonly Vector3 _a, _b;
         public SegmentBroadcast(Vector3 a, Vector3 b)
         {
             _ax = new Vector<float>(a.X); _ay = new Vector<float>(a.Y); _az = new Vector<float>(a.Z);
             _bx = new Vector<float>(b.X); _by = new Vector<float>(b.Y); _bz = new Vector<float>(b.Z);
+            _a = a; _b = b;
         }
         public Vector<float> AX(int i) => _ax;
         public Vector<float> AY(int i) => _ay;
@@ -123,12 +172,20 @@ namespace ProximityLib.Batch
         public Vector<float> BX(int i) => _bx;
         public Vector<float> BY(int i) => _by;
         public Vector<float> BZ(int i) => _bz;
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void EndsAt(int i, out Vector3 a, out Vector3 b)
+        {
+            a = _a; b = _b;
+        }
     }
 
     /// <summary>Oriented boxes lane by lane: center, axes (row-wise: X axis, Y axis, Z axis) and half-extents.</summary>
     internal interface IObbs
     {
         void Load(int i, out V3 center, out V3 x, out V3 y, out V3 z, out V3 half);
+        /// <summary>Box i for the scalar lanes.</summary>
+        void LoadAt(int i, out Vector3 center, out Vector3 x, out Vector3 y, out Vector3 z, out Vector3 half);
     }
 
     /// <summary>Three lanes of coordinates.</summary>
@@ -155,15 +212,27 @@ namespace ProximityLib.Batch
             z = new V3(new Vector<float>(_s.ZX, i), new Vector<float>(_s.ZY, i), new Vector<float>(_s.ZZ, i));
             half = new V3(new Vector<float>(_s.HX, i), new Vector<float>(_s.HY, i), new Vector<float>(_s.HZ, i));
         }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void LoadAt(int i, out Vector3 center, out Vector3 x, out Vector3 y, out Vector3 z, out Vector3 half)
+        {
+            center = new Vector3(_s.CX[i], _s.CY[i], _s.CZ[i]);
+            x = new Vector3(_s.XX[i], _s.XY[i], _s.XZ[i]);
+            y = new Vector3(_s.YX[i], _s.YY[i], _s.YZ[i]);
+            z = new Vector3(_s.ZX[i], _s.ZY[i], _s.ZZ[i]);
+            half = new Vector3(_s.HX[i], _s.HY[i], _s.HZ[i]);
+        }
     }
 
     internal readonly struct ObbBroadcast : IObbs
     {
         private readonly V3 _c, _x, _y, _z, _h;
+        private readonly Vector3 _center, _axisX, _axisY, _axisZ, _half;
         public ObbBroadcast(Obb3 b)
         {
-            _c = V3.Broadcast(b.Center); _x = V3.Broadcast(b.AxisX); _y = V3.Broadcast(b.AxisY); _z = V3.Broadcast(b.AxisZ);
-            _h = V3.Broadcast(b.HalfExtents);
+            _center = b.Center; _axisX = b.AxisX; _axisY = b.AxisY; _axisZ = b.AxisZ; _half = b.HalfExtents;
+            _c = V3.Broadcast(_center); _x = V3.Broadcast(_axisX); _y = V3.Broadcast(_axisY); _z = V3.Broadcast(_axisZ);
+            _h = V3.Broadcast(_half);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -171,50 +240,30 @@ namespace ProximityLib.Batch
         {
             center = _c; x = _x; y = _y; z = _z; half = _h;
         }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void LoadAt(int i, out Vector3 center, out Vector3 x, out Vector3 y, out Vector3 z, out Vector3 half)
+        {
+            center = _center; x = _axisX; y = _axisY; z = _axisZ; half = _half;
+        }
     }
 
-    /// <summary>A per-lane computation over a batch: values to report (distances) or to test (≤ 0 means overlap).</summary>
+    /// <summary>
+    /// A per-lane computation over a batch: values to report (distances) or to test (≤ 0 means overlap), on
+    /// <see cref="Vector{T}"/> lanes or on one lane in scalar float. Kernels are mutable structs passed by value: a call
+    /// on a readonly field (or <c>in</c> parameter) whose type is a type parameter copies the struct first, which Mono
+    /// does on every call (a one-against-many source holds its shape broadcast to whole vectors).
+    /// </summary>
     internal interface IKernel
     {
+        /// <summary>Lanes i to i + <see cref="Vector{T}.Count"/> − 1.</summary>
         Vector<float> Compute(int i);
-    }
 
-    internal static class Runner
-    {
-        public static void Values<TK>(in TK kernel, int count, System.Span<float> result) where TK : struct, IKernel
-        {
-            if (result.Length < count) throw new System.ArgumentException($"result needs room for {count} values (has {result.Length}).", nameof(result));
-            int w = Vector<float>.Count, i = 0;
-            // Vector<T>.CopyTo(Span<T>) is missing from netstandard2.1; a reinterpreting store does the same.
-            for (; i + w <= count; i += w) MemoryMarshal.Cast<float, Vector<float>>(result.Slice(i, w))[0] = kernel.Compute(i);
-            if (i < count)
-            {
-                System.Span<float> tail = stackalloc float[w];
-                MemoryMarshal.Cast<float, Vector<float>>(tail)[0] = kernel.Compute(i);
-                tail.Slice(0, count - i).CopyTo(result.Slice(i));
-            }
-        }
-
-        public static void NonPositive<TK>(in TK kernel, int count, System.Span<bool> result) where TK : struct, IKernel
-        {
-            if (result.Length < count) throw new System.ArgumentException($"result needs room for {count} values (has {result.Length}).", nameof(result));
-            int w = Vector<float>.Count;
-            // Lanes go through a stack buffer: indexing a Vector<T> by a variable lane is slow on every target.
-            System.Span<float> lanes = stackalloc float[w];
-            var asVector = MemoryMarshal.Cast<float, Vector<float>>(lanes);
-            for (int i = 0; i < count; i += w)
-            {
-                asVector[0] = kernel.Compute(i);
-                int n = System.Math.Min(w, count - i);
-                for (int j = 0; j < n; j++) result[i + j] = lanes[j] <= 0;
-            }
-        }
-
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static Vector<float> Clamp(Vector<float> x, Vector<float> lo, Vector<float> hi) => Vector.Min(Vector.Max(x, lo), hi);
-
-        /// <summary>−x by flipping the sign bit, as .NET's unary minus does: Mono's Vector&lt;T&gt; negation computes 0 − x, which keeps +0 positive, so unary minus would give Mono and .NET results of different sign at 0.</summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static Vector<float> Negate(Vector<float> x) => Vector.AsVectorSingle(Vector.Xor(Vector.AsVectorUInt32(x), new Vector<uint>(0x80000000u)));
+        /// <summary>
+        /// Lane i in scalar float, by the same operations in the same order as <see cref="Compute"/>, so the same bits;
+        /// a kernel whose values are only tested (OBB–OBB, AABB–AABB) may stop at the first positive term: then only
+        /// whether the value is ≤ 0 agrees.
+        /// </summary>
+        float Lane(int i);
     }
 }

@@ -1,0 +1,113 @@
+// Copied from src/ProximityLib/Batch/Runner.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System;
+using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
+
+namespace ProximityLib.Batch
+{
+    /// <summary>Runs a kernel over a batch: on <see cref="Vector{T}"/> lanes where they are hardware-accelerated, else lane by lane in scalar float.</summary>
+    internal static class Runner
+    {
+        /// <summary>
+        /// Whether the kernels run on <see cref="Vector{T}"/> lanes. Where <see cref="Vector.IsHardwareAccelerated"/> is
+        /// false (Mono, Unity's editor) <see cref="Vector{T}"/> is a software loop over four lanes, slower than the scalar
+        /// API; there each lane runs as plain scalar float code, with the same bits. Tests switch it off to check that.
+        /// </summary>
+        internal static bool Vectorized = Vector.IsHardwareAccelerated;
+
+        public static void Values<TK>(TK kernel, int count, Span<float> result) where TK : struct, IKernel
+        {
+            CheckRoom(count, result.Length);
+            if (!Workers.Values(kernel, count, result)) Values(kernel, 0, count, result);
+        }
+
+        public static void NonPositive<TK>(TK kernel, int count, Span<bool> result) where TK : struct, IKernel
+        {
+            CheckRoom(count, result.Length);
+            if (!Workers.NonPositive(kernel, count, result)) NonPositive(kernel, 0, count, result);
+        }
+
+        private static void CheckRoom(int count, int length)
+        {
+            if (length < count) throw new ArgumentException($"result needs room for {count} values (has {length}).", "result");
+        }
+
+        /// <summary>Lanes start to end − 1 into result[start..end); start is a multiple of <see cref="Vector{T}.Count"/>.</summary>
+        internal static void Values<TK>(TK kernel, int start, int end, Span<float> result) where TK : struct, IKernel
+        {
+            int i = start;
+            if (!Vectorized)
+            {
+                for (; i < end; i++) result[i] = kernel.Lane(i);
+                return;
+            }
+            int w = Vector<float>.Count;
+            // Vector<T>.CopyTo(Span<T>) is missing from netstandard2.1; a reinterpreting store does the same.
+            for (; i + w <= end; i += w) MemoryMarshal.Cast<float, Vector<float>>(result.Slice(i, w))[0] = kernel.Compute(i);
+            if (i < end)
+            {
+                Span<float> tail = stackalloc float[w];
+                MemoryMarshal.Cast<float, Vector<float>>(tail)[0] = kernel.Compute(i);
+                tail.Slice(0, end - i).CopyTo(result.Slice(i));
+            }
+        }
+
+        /// <summary>Verdicts (value ≤ 0) of lanes start to end − 1 into result[start..end); start is a multiple of <see cref="Vector{T}.Count"/>.</summary>
+        internal static void NonPositive<TK>(TK kernel, int start, int end, Span<bool> result) where TK : struct, IKernel
+        {
+            int i = start;
+            if (!Vectorized)
+            {
+                for (; i < end; i++) result[i] = kernel.Lane(i) <= 0;
+                return;
+            }
+            int w = Vector<float>.Count;
+            // Four vectors of lane masks (all ones or zero) narrow to one vector of bytes, stored as bools 1 or 0.
+            var bytes = MemoryMarshal.Cast<bool, byte>(result);
+            var one = new Vector<byte>(1);
+            for (; i + 4 * w <= end; i += 4 * w)
+            {
+                var low = Vector.Narrow(Mask(kernel.Compute(i)), Mask(kernel.Compute(i + w)));
+                var high = Vector.Narrow(Mask(kernel.Compute(i + 2 * w)), Mask(kernel.Compute(i + 3 * w)));
+                MemoryMarshal.Cast<byte, Vector<byte>>(bytes.Slice(i, 4 * w))[0] = Vector.Narrow(low, high) & one;
+            }
+            if (i == end) return;
+            // The last few vectors lane by lane through a stack buffer (indexing a Vector<T> by a variable lane is slow).
+            Span<float> lanes = stackalloc float[w];
+            var asVector = MemoryMarshal.Cast<float, Vector<float>>(lanes);
+            for (; i < end; i += w)
+            {
+                asVector[0] = kernel.Compute(i);
+                int n = Math.Min(w, end - i);
+                for (int j = 0; j < n; j++) result[i + j] = lanes[j] <= 0;
+            }
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector<uint> Mask(Vector<float> x) => Vector.AsVectorUInt32(Vector.LessThanOrEqual(x, Vector<float>.Zero));
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Vector<float> Clamp(Vector<float> x, Vector<float> lo, Vector<float> hi) => Vector.Min(Vector.Max(x, lo), hi);
+
+        /// <summary>−x by flipping the sign bit, as .NET's unary minus does: Mono's Vector&lt;T&gt; negation computes 0 − x, which keeps +0 positive, so unary minus would give Mono and .NET results of different sign at 0.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Vector<float> Negate(Vector<float> x) => Vector.AsVectorSingle(Vector.Xor(Vector.AsVectorUInt32(x), new Vector<uint>(0x80000000u)));
+
+        /// <summary>
+        /// The scalar lanes' clamp. It differs from the vector one (IEEE maximum, then minimum) only in the sign of a zero
+        /// result, which the kernels square or subtract from the clamped value before it can reach a result.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static float Clamp(float x, float lo, float hi) => x < lo ? lo : x > hi ? hi : x;
+
+        /// <summary>
+        /// The smaller of a and b as <see cref="Vector.Min{T}"/> gives it on .NET 9 and later (IEEE 754-2019 minimum): −0
+        /// below +0, NaN if either is NaN. Scalar <c>Math.Min</c> does not do that on every runtime.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static float Min(float a, float b) =>
+            a < b ? a : b < a ? b : a == b ? BitConverter.Int32BitsToSingle(BitConverter.SingleToInt32Bits(a) | BitConverter.SingleToInt32Bits(b)) : a + b;
+    }
+}

@@ -1,0 +1,220 @@
+// Copied from src/ProximityLib/Double/Kernels/SegmentBoxKernels.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System;
+using System.Runtime.CompilerServices;
+
+namespace ProximityLib.Double
+{
+    internal static partial class Kernels
+    {
+        /// <summary>
+        /// Minimum over t ∈ [0, 1] of the squared distance from a + t·d to the box [lo, hi] (all box-local). The function is
+        /// convex and piecewise quadratic, with breakpoints where the segment crosses a slab plane, so its half-derivative
+        /// <see cref="SlabSlope"/> is nondecreasing: its sign at the ends and at the breakpoints brackets the minimum in
+        /// one piece, where the set of clamped axes is fixed and the minimum is that piece's clamped stationary point
+        /// (the closed form; no sorting, one piece solved). The squared gap is measured at the returned parameter.
+        /// </summary>
+        public static double SegmentBoxLocal(Vector3D a, Vector3D d, Vector3D lo, Vector3D hi, out double t)
+        {
+            double left = 0, right = 1;
+            if (SlabSlope(a, d, lo, hi, 0) >= 0) right = 0;
+            else if (SlabSlope(a, d, lo, hi, 1) <= 0) left = 1;
+            else
+            {
+                Narrow(a, d, lo, hi, (lo.X - a.X) / d.X, ref left, ref right);
+                Narrow(a, d, lo, hi, (hi.X - a.X) / d.X, ref left, ref right);
+                Narrow(a, d, lo, hi, (lo.Y - a.Y) / d.Y, ref left, ref right);
+                Narrow(a, d, lo, hi, (hi.Y - a.Y) / d.Y, ref left, ref right);
+                Narrow(a, d, lo, hi, (lo.Z - a.Z) / d.Z, ref left, ref right);
+                Narrow(a, d, lo, hi, (hi.Z - a.Z) / d.Z, ref left, ref right);
+            }
+            if (left < right)
+            {
+                // One piece: the axes clamped at its middle stay clamped on it; their quadratic's stationary point, clamped.
+                double tm = 0.5 * (left + right), num = 0, den = 0;
+                Accumulate(a.X, d.X, lo.X, hi.X, tm, ref num, ref den);
+                Accumulate(a.Y, d.Y, lo.Y, hi.Y, tm, ref num, ref den);
+                Accumulate(a.Z, d.Z, lo.Z, hi.Z, tm, ref num, ref den);
+                t = den > 0 ? Num.Clamp(num / den, left, right) : left;
+            }
+            else t = left; // the minimum is at an end or exactly at a breakpoint
+            return Gap(a.X, d.X, lo.X, hi.X, t) + Gap(a.Y, d.Y, lo.Y, hi.Y, t) + Gap(a.Z, d.Z, lo.Z, hi.Z, t);
+        }
+
+        /// <summary>
+        /// Half the derivative of the squared distance from a + t·d to the box at t: Σ d_i·(e_i − clamp(e_i)), e = a + t·d.
+        /// Nondecreasing in t (each term is).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double SlabSlope(Vector3D a, Vector3D d, Vector3D lo, Vector3D hi, double t) =>
+            d.X * Outside(a.X + t * d.X, lo.X, hi.X) + d.Y * Outside(a.Y + t * d.Y, lo.Y, hi.Y) + d.Z * Outside(a.Z + t * d.Z, lo.Z, hi.Z);
+
+        /// <summary>e − clamp(e, lo, hi): how far e lies outside [lo, hi], signed (branch-free: at most one term is not 0).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Outside(double e, double lo, double hi) => Math.Min(e - lo, 0) + Math.Max(e - hi, 0);
+
+        /// <summary>
+        /// Shrinks the bracket [left, right] of the minimum with breakpoint b (skipped outside the bracket, and when not a
+        /// number: an axis the segment does not move along has none): the slope's sign there says on which side the minimum is.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void Narrow(Vector3D a, Vector3D d, Vector3D lo, Vector3D hi, double b, ref double left, ref double right)
+        {
+            if (!(b > left && b < right)) return;
+            double s = SlabSlope(a, d, lo, hi, b);
+            if (s <= 0) left = b;
+            if (s >= 0) right = b;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void Accumulate(double a, double d, double lo, double hi, double t, ref double num, ref double den)
+        {
+            double e = a + t * d;
+            double bound;
+            if (e < lo) bound = lo;
+            else if (e > hi) bound = hi;
+            else return;
+            num += d * (bound - a);
+            den += d * d;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Gap(double a, double d, double lo, double hi, double t)
+        {
+            double g = Outside(a + t * d, lo, hi);
+            return g * g;
+        }
+
+        /// <summary>The box point nearest to the box-local point e, in world coordinates.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector3D ClampToBox(in Box box, Vector3D e) =>
+            box.Origin + box.ToWorldOffset(new Vector3D(Num.Clamp(e.X, box.Lo.X, box.Hi.X), Num.Clamp(e.Y, box.Lo.Y, box.Hi.Y), Num.Clamp(e.Z, box.Lo.Z, box.Hi.Z)));
+
+        /// <summary>Closest points of a segment and a box when they are apart (squared distance 0 when they meet).</summary>
+        public static double SegmentBoxSeparated(Vector3D a, Vector3D b, in Box box, out double t, out Vector3D onSegment, out Vector3D onBox)
+        {
+            var la = box.ToLocal(a - box.Origin);
+            var ld = box.ToLocal(b - a);
+            double g = SegmentBoxLocal(la, ld, box.Lo, box.Hi, out t);
+            onSegment = SegmentPoint(a, b, t);
+            onBox = ClampToBox(box, la + ld * t);
+            return g;
+        }
+
+        /// <summary>
+        /// Segment against a solid box, in the box frame. Apart (by the separating-axis verdict that Overlaps gives): the
+        /// piecewise-quadratic minimum above. Meeting: the minimum translation over the separating-axis candidates of the
+        /// Minkowski sum (box normals and segment × box edges), each evaluated on its own normalised direction so a noisy
+        /// near-degenerate axis can only overestimate; the witness points are the closest points of the just-touching
+        /// configuration, moved back.
+        /// </summary>
+        public static DistanceResult3 SegmentBox(Vector3D a, Vector3D b, in Box box, out bool inRange)
+        {
+            var ra = a - box.Origin;
+            inRange = Range.Box(Math.Max(Range.MaxAbs(ra), Math.Max(Range.MaxAbs(b - box.Origin), Range.MaxAbs(box.Hi - box.Lo))));
+            var la = box.ToLocal(ra);
+            var ld = box.ToLocal(b - a);
+            var lo = box.Lo;
+            var hi = box.Hi;
+            var c = (lo + hi) * 0.5;
+            var h = (hi - lo) * 0.5;
+            // The separating-axis verdict decides which side we are on: the squared gap alone would call a segment
+            // crossing a zero-thickness box "apart" by rounding.
+            if (!SegmentBoxOverlapsLocal(la - c, ld, h, box.Planar))
+            {
+                double g = SegmentBoxLocal(la, ld, lo, hi, out double t);
+                // A subnormal squared gap has lost bits: the slow path answers it at a scale where it has not.
+                inRange &= g == 0 || Range.In(g);
+                return new DistanceResult3(Math.Sqrt(g), g, SegmentPoint(a, b, t), ClampToBox(box, la + ld * t), t, 0);
+            }
+
+            double depth = Math.Max(0, SegmentBoxPenetration(la - c, ld, h, box.Planar, out var push));
+            // The segment moved by the push just touches the box: its closest pair there, the segment's point moved back.
+            var moved = la + push;
+            SegmentBoxLocal(moved, ld, lo, hi, out double tp);
+            var onSegment = SegmentPoint(a, b, tp);
+            return new DistanceResult3(-depth, 0, onSegment, depth > 0 ? ClampToBox(box, moved + ld * tp) : onSegment, tp, 0);
+        }
+
+        /// <summary>
+        /// The least push (box-local) that clears the segment m + [0, 1]·d (relative to the box centre) from the box of
+        /// half-extents h, over the box normals and the segment × box-edge directions (planar: the in-plane ones). A box
+        /// normal needs no normalising; on a segment × edge direction the whole segment projects to one value, and the
+        /// projections are divided by the direction's length once.
+        /// </summary>
+        private static double SegmentBoxPenetration(Vector3D m, Vector3D d, Vector3D h, bool planar, out Vector3D push)
+        {
+            double best = double.PositiveInfinity;
+            push = default;
+            TryFaceAxis(m.X, d.X, h.X, Vector3D.UnitX, ref best, ref push);
+            TryFaceAxis(m.Y, d.Y, h.Y, Vector3D.UnitY, ref best, ref push);
+            TryCrossAxis(new Vector3D(d.Y, -d.X, 0), m.X * d.Y - m.Y * d.X, h.X * Math.Abs(d.Y) + h.Y * Math.Abs(d.X), ref best, ref push);
+            if (!planar)
+            {
+                TryFaceAxis(m.Z, d.Z, h.Z, Vector3D.UnitZ, ref best, ref push);
+                TryCrossAxis(new Vector3D(0, d.Z, -d.Y), m.Y * d.Z - m.Z * d.Y, h.Y * Math.Abs(d.Z) + h.Z * Math.Abs(d.Y), ref best, ref push);
+                TryCrossAxis(new Vector3D(-d.Z, 0, d.X), m.Z * d.X - m.X * d.Z, h.X * Math.Abs(d.Z) + h.Z * Math.Abs(d.X), ref best, ref push);
+            }
+            return best;
+        }
+
+        /// <summary>A box normal n: the segment covers [m, m + d] along it, the box [−h, h].</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void TryFaceAxis(double m, double d, double h, Vector3D n, ref double best, ref Vector3D push)
+        {
+            double e = m + d;
+            double down = Math.Max(m, e) + h; // moving the segment by −n·down clears the box
+            double up = h - Math.Min(m, e);   // moving it by +n·up clears the box
+            if (down < best) { best = down; push = -n * down; }
+            if (up < best) { best = up; push = n * up; }
+        }
+
+        /// <summary>A segment × box-edge direction (unnormalised): the segment projects to p along it, the box to [−r, r].</summary>
+        private static void TryCrossAxis(Vector3D axis, double p, double r, ref double best, ref Vector3D push)
+        {
+            double len2 = axis.LengthSquared;
+            if (!(len2 > 0) || double.IsInfinity(len2)) return;
+            double len = Math.Sqrt(len2);
+            double down = (p + r) / len, up = (r - p) / len;
+            if (down < best) { best = down; push = axis * (-down / len); }
+            if (up < best) { best = up; push = axis * (up / len); }
+        }
+
+        /// <summary><see cref="SegmentBoxOverlaps(Vector3D, Vector3D, in Box)"/>, with whether the magnitudes allow the fast path.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool SegmentBoxOverlaps(Vector3D a, Vector3D b, in Box box, out bool inRange)
+        {
+            var ra = a - box.Origin;
+            inRange = Range.Box(Math.Max(Range.MaxAbs(ra), Math.Max(Range.MaxAbs(b - box.Origin), Range.MaxAbs(box.Hi - box.Lo))));
+            return SegmentBoxOverlapsLocal(box.ToLocal(ra) - box.LocalCenter, box.ToLocal(b - a), box.Half, box.Planar);
+        }
+
+        /// <summary>Segment–box overlap by the separating-axis test in the box frame, no square roots, early outs.</summary>
+        public static bool SegmentBoxOverlaps(Vector3D a, Vector3D b, in Box box) =>
+            SegmentBoxOverlapsLocal(box.ToLocal(a - box.Origin) - box.LocalCenter, box.ToLocal(b - a), box.Half, box.Planar);
+
+        /// <summary>
+        /// The separating-axis test of the segment m + [0, 1]·d (box-local, relative to the centre) against the box of
+        /// half-extents h (Ericson, RTCD §5.3.3): the box normals, then the segment × box-edge directions, on which the
+        /// whole segment projects to one value.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool SegmentBoxOverlapsLocal(Vector3D m, Vector3D d, Vector3D h, bool planar)
+        {
+            if (SlabSeparates(m.X, d.X, h.X) || SlabSeparates(m.Y, d.Y, h.Y)) return false;
+            if (!planar && SlabSeparates(m.Z, d.Z, h.Z)) return false;
+            if (Math.Abs(m.X * d.Y - m.Y * d.X) > h.X * Math.Abs(d.Y) + h.Y * Math.Abs(d.X)) return false;
+            if (planar) return true;
+            return !(Math.Abs(m.Y * d.Z - m.Z * d.Y) > h.Y * Math.Abs(d.Z) + h.Z * Math.Abs(d.Y))
+                && !(Math.Abs(m.Z * d.X - m.X * d.Z) > h.X * Math.Abs(d.Z) + h.Z * Math.Abs(d.X));
+        }
+
+        /// <summary>Whether the interval [m, m + d] misses [−h, h].</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool SlabSeparates(double m, double d, double h)
+        {
+            double e = m + d;
+            return Math.Min(m, e) > h || Math.Max(m, e) < -h;
+        }
+    }
+}
