@@ -12,7 +12,10 @@ namespace ProximityLib.Batch
     /// </summary>
     internal static class Workers
     {
-        /// <summary>Batches below this many lanes stay on the calling thread: waking a helper costs more than it saves.</summary>
+        /// <summary>
+        /// Batches below this many lanes stay on the calling thread. Measured on two cores (docs/design.md): at 16k lanes
+        /// the cheap kernels ran slower split even with a core free, at 64k none did and the heavy ones gained.
+        /// </summary>
         internal const int Threshold = 1 << 16;
 
         /// <summary>
@@ -56,7 +59,8 @@ namespace ProximityLib.Batch
         /// <summary>
         /// One call's shared state, kept per calling thread and kernel type so that a call allocates nothing once warm. A
         /// helper queued by an earlier call may start during a later call of the same thread: it then helps that call
-        /// (the fields are written before the job opens), or finds the job closed and leaves.
+        /// (the fields are written before the job opens, and that call counts it as one of its helpers), or finds the
+        /// job closed and leaves.
         /// </summary>
         private sealed unsafe class Job<TK>
 #if NET
@@ -73,6 +77,9 @@ namespace ProximityLib.Batch
             /// <summary>Pulsed when the last helper inside leaves, for a caller that found a helper still working.</summary>
             private readonly object _gate = new object();
 
+            /// <summary>Helpers queued and not started yet: a call queues only as many more as its threads need, so short calls on a busy pool do not pile up work items.</summary>
+            private int _queued;
+
             private int _nextChunk;
             private TK _kernel;
             private int _count;
@@ -88,7 +95,11 @@ namespace ProximityLib.Batch
                 job._verdicts = verdicts;
                 job._nextChunk = 0;
                 Interlocked.Exchange(ref job._inside, 0);
-                for (int t = 1; t < threads; t++) job.Queue();
+                for (int t = Volatile.Read(ref job._queued) + 1; t < threads; t++)
+                {
+                    Interlocked.Increment(ref job._queued);
+                    job.Queue();
+                }
                 job.Work();
                 job.Close();
                 job._kernel = default; // the sets are the caller's: do not keep them alive
@@ -128,6 +139,7 @@ namespace ProximityLib.Batch
 
             private void Help()
             {
+                Interlocked.Decrement(ref _queued);
                 int inside;
                 do
                 {
