@@ -14,6 +14,10 @@ namespace ProximityTests.Batch
     /// </summary>
     public class WorkersTests
     {
+        /// <summary>Shapes for every test, sliced to each count (building them is the slow part).</summary>
+        private static readonly Lazy<ScalarLanesTests.Sets> Shapes = new Lazy<ScalarLanesTests.Sets>(() => new ScalarLanesTests.Sets(MaxCount, 5));
+        private const int MaxCount = 3 * Workers.ChunkLanes * 7 + 5;
+
         private int _savedCores, _savedThreads;
         private bool _savedVectorized;
 
@@ -47,31 +51,36 @@ namespace ProximityTests.Batch
         {
             var alone = Run(1, n, query);
             var split = Run(4, n, query);
-            for (int i = 0; i <= n; i++)
-            {
-                // NaN lanes included (the sets reach beyond the batch range): the same code gives the same NaN.
-                Assert.That(BitConverter.SingleToInt32Bits(split[i]), Is.EqualTo(BitConverter.SingleToInt32Bits(alone[i])), $"{name}, lane {i} of {n}: split {split[i]:R}, one thread {alone[i]:R}");
-            }
+            // NaN lanes included (the sets reach beyond the batch range): the same code gives the same NaN.
+            int i = 0;
+            while (i <= n && BitConverter.SingleToInt32Bits(split[i]) == BitConverter.SingleToInt32Bits(alone[i])) i++;
+            Assert.That(i, Is.EqualTo(n + 1), () => $"{name}, lane {i} of {n}: split {split[i]:R}, one thread {alone[i]:R}");
         }
 
-        private static void SameVerdicts(string name, int n, Action<bool[]> query) =>
-            Assert.That(Run(4, n, query), Is.EqualTo(Run(1, n, query)), $"{name}, {n} lanes");
+        private static void SameVerdicts(string name, int n, Action<bool[]> query)
+        {
+            var alone = Run<bool>(1, n, query);
+            var split = Run<bool>(4, n, query);
+            int i = 0;
+            while (i <= n && split[i] == alone[i]) i++;
+            Assert.That(i, Is.EqualTo(n + 1), () => $"{name}, lane {i} of {n}: split {split[i]}, one thread {alone[i]}");
+        }
 
         [TestCase(Workers.Threshold - 1, true), TestCase(Workers.Threshold, true), TestCase(Workers.Threshold + 1, true),
-         TestCase(70001, true), TestCase(70001, false), TestCase(3 * Workers.ChunkLanes * 7 + 5, true)]
+         TestCase(70001, true), TestCase(70001, false), TestCase(MaxCount, true)]
         public void SplitRunsGiveTheOneThreadResults(int n, bool vectorized)
         {
             Runner.Vectorized = vectorized;
-            var s = new ScalarLanesTests.Sets(n, n);
-            var points = new PointSet(s.Points);
-            var spheres = new SphereSet(s.Spheres);
-            var spheres2 = new SphereSet(s.Spheres2);
-            var boxes = new AabbSet(s.Boxes);
-            var boxes2 = new AabbSet(s.Boxes2);
-            var obbs = new ObbSet(s.Obbs);
-            var obbs2 = new ObbSet(s.Obbs2);
-            var segments = new SegmentSet(s.Segments);
-            var segments2 = new SegmentSet(s.Segments2);
+            var s = Shapes.Value;
+            var points = new PointSet(s.Points.AsSpan(0, n));
+            var spheres = new SphereSet(s.Spheres.AsSpan(0, n));
+            var spheres2 = new SphereSet(s.Spheres2.AsSpan(0, n));
+            var boxes = new AabbSet(s.Boxes.AsSpan(0, n));
+            var boxes2 = new AabbSet(s.Boxes2.AsSpan(0, n));
+            var obbs = new ObbSet(s.Obbs.AsSpan(0, n));
+            var obbs2 = new ObbSet(s.Obbs2.AsSpan(0, n));
+            var segments = new SegmentSet(s.Segments.AsSpan(0, n));
+            var segments2 = new SegmentSet(s.Segments2.AsSpan(0, n));
             int j = n / 3;
             SameBits("sphere–sphere", n, x => BatchQuery.Distances(spheres, spheres2, x));
             SameBits("sphere–sphere one", n, x => BatchQuery.Distances(s.Spheres[j], spheres2, x));
@@ -145,12 +154,12 @@ namespace ProximityTests.Batch
         [Test]
         public void AWarmSplitCallAllocatesNothingOnTheCallingThread()
         {
-            var s = new ScalarLanesTests.Sets(Workers.Threshold * 2, 7);
+            var s = Shapes.Value;
             var obbs = new ObbSet(s.Obbs);
             var obbs2 = new ObbSet(s.Obbs2);
             var spheres = new SphereSet(s.Spheres);
-            var values = new float[s.Spheres.Length];
-            var verdicts = new bool[s.Obbs.Length];
+            var values = new float[MaxCount];
+            var verdicts = new bool[MaxCount];
             BatchQuery.MaxDegreeOfParallelism = 4;
             BatchQuery.Overlaps(obbs, obbs2, verdicts);
             BatchQuery.Distances(s.Spheres[0], spheres, values);
@@ -163,11 +172,11 @@ namespace ProximityTests.Batch
         [Test]
         public void BadArgumentsAreRefusedBeforeTheSplit()
         {
-            var s = new ScalarLanesTests.Sets(Workers.Threshold + 1, 3);
+            var s = Shapes.Value;
             var spheres = new SphereSet(s.Spheres);
             var fewer = new SphereSet(s.Spheres2.AsSpan(1));
-            Assert.That(() => BatchQuery.Distances(spheres, fewer, new float[s.Spheres.Length]), Throws.ArgumentException.With.Property("ParamName").EqualTo("b"));
-            Assert.That(() => BatchQuery.Overlaps(s.Spheres[0], spheres, new bool[s.Spheres.Length - 1]), Throws.ArgumentException.With.Property("ParamName").EqualTo("result"));
+            Assert.That(() => BatchQuery.Distances(spheres, fewer, new float[MaxCount]), Throws.ArgumentException.With.Property("ParamName").EqualTo("b"));
+            Assert.That(() => BatchQuery.Overlaps(s.Spheres[0], spheres, new bool[MaxCount - 1]), Throws.ArgumentException.With.Property("ParamName").EqualTo("result"));
             Assert.That(() => BatchQuery.MaxDegreeOfParallelism = 0, Throws.ArgumentException.With.Property("ParamName").EqualTo("value"));
         }
 
