@@ -71,7 +71,7 @@ namespace ProximityLib.Double
         {
             var r = PointSegmentResidual(p, a, b, out double t, out double dd);
             double r2 = r.LengthSquared, dist = Math.Sqrt(r2);
-            inRange = (Range.In(r2) | r == default) & (Range.In(dd) | a == b);
+            inRange = Range.Length2(r, r2) & (Range.In(dd) | a == b);
             return new PointContact(dist, r2, SegmentPoint(a, b, t), withNormal ? SegmentNormal(r, r2, dist, a, b, t, dd) : default, t);
         }
 
@@ -131,7 +131,7 @@ namespace ProximityLib.Double
         {
             var r = p - center;
             double r2 = r.LengthSquared, len = Math.Sqrt(r2);
-            inRange = Range.In(r2) | r == default; // an exact 0 (the point at the centre) is no underflow
+            inRange = Range.Length2(r, r2); // an exact 0 (the point at the centre) is no underflow
             // Coincident centres have no preferred direction: +X is documented and keeps the 2D API planar.
             var n = len > 0 ? r * (1 / len) : Vector3D.UnitX;
             double d = len - radius;
@@ -174,7 +174,7 @@ namespace ProximityLib.Double
         {
             var r = PointSegmentResidual(p, a, b, out _, out double dd);
             double r2 = r.LengthSquared;
-            inRange = (Range.In(r2) | r == default) & (Range.In(dd) | a == b);
+            inRange = Range.Length2(r, r2) & (Range.In(dd) | a == b);
             return Math.Sqrt(r2);
         }
 
@@ -184,7 +184,7 @@ namespace ProximityLib.Double
         {
             var r = p - center;
             double r2 = r.LengthSquared;
-            inRange = Range.In(r2) | r == default;
+            inRange = Range.Length2(r, r2);
             return Math.Sqrt(r2) - radius;
         }
 
@@ -313,7 +313,7 @@ namespace ProximityLib.Double
         {
             var d = b - a;
             double d2 = d.LengthSquared;
-            inRange = Range.In(d2) | d == default; // equal points: an exact 0, no underflow
+            inRange = Range.Length2(d, d2); // equal points: an exact 0, no underflow
             return new DistanceResult3(Math.Sqrt(d2), d2, a, b, 0, 0);
         }
 
@@ -332,7 +332,7 @@ namespace ProximityLib.Double
             double r = ra + rb, dist = len - r;
             // As for a point and a sphere of radius ra + rb; that sum is the only other quantity that could overflow while
             // the answer is finite.
-            inRange = (Range.In(d2) | d == default) & r <= double.MaxValue;
+            inRange = Range.Length2(d, d2) & r <= double.MaxValue;
             // Shapes store no −0 (see Num.NoNegativeZero), so where the centres agree in a coordinate d is +0 in either
             // order and the witnesses' zero signs agree too.
             return new DistanceResult3(dist, dist > 0 ? dist * dist : 0, ca + n * ra, cb - n * rb, 0, 0);
@@ -344,7 +344,7 @@ namespace ProximityLib.Double
         {
             var d = b - a;
             double d2 = d.LengthSquared;
-            inRange = Range.In(d2) | d == default;
+            inRange = Range.Length2(d, d2);
             return Math.Sqrt(d2);
         }
 
@@ -355,7 +355,7 @@ namespace ProximityLib.Double
             var d = cb - ca;
             double d2 = d.LengthSquared;
             double r = ra + rb;
-            inRange = (Range.In(d2) | d == default) & r <= double.MaxValue;
+            inRange = Range.Length2(d, d2) & r <= double.MaxValue;
             return Math.Sqrt(d2) - r;
         }
 
