@@ -35,6 +35,7 @@ namespace ProximityMonoCheck
             Run("double factories", DoubleFactories);
             Run("float factories", FloatFactories);
             Run("batch", Batch);
+            Run("large batch", LargeBatch);
             Run("coverage", Coverage);
             Console.Out.Write(Out.ToString());
             if (_failures > 0) Console.Error.WriteLine($"mono smoke: {_failures} failure(s), see the lines starting with FAIL");
@@ -390,6 +391,53 @@ namespace ProximityMonoCheck
             Line($"paired sets of unequal size: {Attempt(() => { BatchQuery.Distances(few, second, new float[N]); return "no error"; })}");
             Line($"result too short: {Attempt(() => { BatchQuery.Overlaps(sphere, second, new bool[N - 1]); return "no error"; })}");
             Line($"empty set: {Attempt(() => { BatchQuery.Distances(sphere, new SphereSet(ReadOnlySpan<F.Sphere>.Empty), Span<float>.Empty); return "no error"; })}");
+        }
+
+        /// <summary>
+        /// Batches above the multi-core threshold (65,536 shapes), one against many and paired: the split run must give
+        /// the one-thread run's bits, and a digest of them is printed (the same on every runtime).
+        /// </summary>
+        private static void LargeBatch()
+        {
+            const int n = 70001;
+            var spheres = new SphereSet(Enumerable.Range(0, n).Select(i => new F.Sphere(At(i, 3), (i % 3) * 0.75f)).ToArray());
+            var segments = new SegmentSet(Enumerable.Range(0, n).Select(i => new F.Segment3(At(i, 1), At(i, 7))).ToArray());
+            var obbs = Enumerable.Range(0, n)
+                .Select(i => new F.Obb3(At(i, 2), new Quaternion((i % 3) * 0.25f, (i % 5) * 0.125f, (i % 2) * 0.1f, 1), new Vector3(1, 0.5f, 0.25f * (i % 4))))
+                .ToArray();
+            var obbSet = new ObbSet(obbs);
+            var secondObbs = new ObbSet(obbs.Reverse().ToArray());
+            var sphere = new F.Sphere(new Vector3(0.25f, -0.5f, 0), 1);
+            var segment = new F.Segment3(new Vector3(-2, 0, 0), new Vector3(2, 0.5f, 0.25f));
+            Split<float>("Distances(Sphere, SphereSet)", n, r => BatchQuery.Distances(sphere, spheres, r), f => BitConverter.ToInt32(BitConverter.GetBytes(f), 0));
+            Split<float>("Distances(SegmentSet, SegmentSet)", n, r => BatchQuery.Distances(segments, segments, r), f => BitConverter.ToInt32(BitConverter.GetBytes(f), 0));
+            Split<float>("Distances(Segment3, SegmentSet)", n, r => BatchQuery.Distances(segment, segments, r), f => BitConverter.ToInt32(BitConverter.GetBytes(f), 0));
+            Split<bool>("Overlaps(ObbSet, ObbSet)", n, r => BatchQuery.Overlaps(obbSet, secondObbs, r), b => b ? 1 : 0);
+            Split<bool>("Overlaps(Sphere, SphereSet)", n, r => BatchQuery.Overlaps(sphere, spheres, r), b => b ? 1 : 0);
+        }
+
+        /// <summary>Runs a large batch split (the default degree of parallelism) and on one thread; prints whether they agree and an FNV-1a digest.</summary>
+        private static void Split<T>(string name, int n, Action<T[]> query, Func<T, int> bits)
+        {
+            var split = new T[n];
+            query(split);
+            int saved = BatchQuery.MaxDegreeOfParallelism;
+            var alone = new T[n];
+            try
+            {
+                BatchQuery.MaxDegreeOfParallelism = 1;
+                query(alone);
+            }
+            finally { BatchQuery.MaxDegreeOfParallelism = saved; }
+            uint digest = 2166136261;
+            int differ = 0;
+            for (int i = 0; i < n; i++)
+            {
+                digest = (digest ^ (uint)bits(split[i])) * 16777619;
+                if (bits(split[i]) != bits(alone[i])) differ++;
+            }
+            Line($"{name} over {n}: digest {digest:x8}");
+            if (differ > 0) Fail($"{name} over {n}: {differ} lane(s) split over cores differ from one thread");
         }
 
         /// <summary>Marks the set's constructor (from a span of <paramref name="shape"/>) and its Set method as called.</summary>

@@ -3,8 +3,8 @@
 # prints every result exactly. It runs three ways and the outputs must be identical:
 #   1. on .NET 10 against the net10.0 build (the reference);
 #   2. on Mono, with the library SOURCE compiled by Roslyn against Mono's own class libraries (-nostdlib, lib/mono/4.5
-#      and Facades/netstandard.dll; C# 9, no NET define), as Unity compiles the UPM package (the scene models are
-#      compiled the same way, not run);
+#      and Facades/netstandard.dll; C# 9, unsafe code as its asmdef allows, no NET define), as Unity compiles the UPM
+#      package (the scene models are compiled the same way, not run);
 #   3. on Mono, against the netstandard2.1 ProximityLib.dll that dotnet builds (what the NuGet package ships).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -36,7 +36,7 @@ dotnet "$here/bin/Release/net10.0/ProximityLib.MonoCheck.dll" > "$work/net.txt" 
 # 2. The library source compiled against Mono's class libraries, as Unity compiles the package.
 mkdir -p "$work/mono-source"
 mapfile -t sources < <(find src/ProximityLib -name '*.cs' -not -path '*/obj/*' -not -path '*/bin/*' | sort)
-if ! roslyn -t:library -warnaserror+ -out:"$work/mono-source/ProximityLib.dll" "${sources[@]}" > "$work/csc.log" 2>&1; then
+if ! roslyn -t:library -unsafe+ -warnaserror+ -out:"$work/mono-source/ProximityLib.dll" "${sources[@]}" > "$work/csc.log" 2>&1; then
   grep -E 'error' "$work/csc.log" | sort -u | head -20 >&2
   echo "error: the library source does not compile against Mono's class libraries" >&2
   status=1

@@ -49,14 +49,15 @@ namespace ProximityUnityCheck
     }
 
     /// <summary>A source folder of the repository that reaches Unity as a copy with its own asmdef.</summary>
-    internal sealed record SourceCopy(string From, string To, string Assembly, string[] References);
+    internal sealed record SourceCopy(string From, string To, string Assembly, string[] References, bool Unsafe);
 
     internal sealed class UnityPackage
     {
         private static readonly SourceCopy[] Copies =
         {
-            new("src/ProximityLib", "Runtime/ProximityLib", "ProximityLib", Array.Empty<string>()),
-            new("src/ProximityLib.Scenes", "Runtime/ProximityLib.Scenes", "ProximityLib.Scenes", new[] { "ProximityLib" }),
+            // The library pins result spans for the multi-core batch (AllowUnsafeBlocks in its csproj).
+            new("src/ProximityLib", "Runtime/ProximityLib", "ProximityLib", Array.Empty<string>(), true),
+            new("src/ProximityLib.Scenes", "Runtime/ProximityLib.Scenes", "ProximityLib.Scenes", new[] { "ProximityLib" }, false),
         };
 
         private readonly string _repo, _root;
@@ -83,20 +84,20 @@ namespace ProximityUnityCheck
                         $"// Copied from {copy.From}/{rel} by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.\n" +
                         "#nullable enable\n" + File.ReadAllText(file).Replace("\r\n", "\n");
                 }
-                files[$"{copy.To}/{copy.Assembly}.asmdef"] = Asmdef(copy.Assembly, copy.References);
+                files[$"{copy.To}/{copy.Assembly}.asmdef"] = Asmdef(copy.Assembly, copy.References, copy.Unsafe);
             }
             files["LICENSE.md"] = File.ReadAllText(Path.Combine(_repo, "LICENSE")).Replace("\r\n", "\n");
             return files;
         }
 
-        private static string Asmdef(string name, string[] references) =>
+        private static string Asmdef(string name, string[] references, bool unsafeCode) =>
             "{\n" +
             $"    \"name\": \"{name}\",\n" +
             $"    \"rootNamespace\": \"{name}\",\n" +
             $"    \"references\": [{string.Join(", ", references.Select(r => $"\"{r}\""))}],\n" +
             "    \"includePlatforms\": [],\n" +
             "    \"excludePlatforms\": [],\n" +
-            "    \"allowUnsafeCode\": false,\n" +
+            $"    \"allowUnsafeCode\": {(unsafeCode ? "true" : "false")},\n" +
             "    \"overrideReferences\": false,\n" +
             "    \"precompiledReferences\": [],\n" +
             "    \"autoReferenced\": true,\n" +

@@ -14,6 +14,18 @@ namespace ProximityLib.Batch
     /// </summary>
     public static class BatchQuery
     {
+        /// <summary>
+        /// The most threads one batch call uses, the calling thread included; default <see cref="Environment.ProcessorCount"/>.
+        /// Calls of at least 65,536 shapes are split over the thread pool (same results, no allocation on .NET); 1 keeps
+        /// every call on the calling thread, for callers that already run batches in parallel or must not use the pool.
+        /// Process-wide; <see cref="ArgumentException"/> below 1.
+        /// </summary>
+        public static int MaxDegreeOfParallelism
+        {
+            get => Workers.MaxThreads;
+            set => Workers.MaxThreads = value >= 1 ? value : throw new ArgumentException("the degree of parallelism must be at least 1.", nameof(value));
+        }
+
         /// <summary>Signed distances between spheres a[i] and b[i].</summary>
         public static void Distances(SphereSet a, SphereSet b, Span<float> result) =>
             Runner.Values(new SphereSphere<SphereLanes>(new SphereLanes(a), Paired(a, b), false), b.Count, result);

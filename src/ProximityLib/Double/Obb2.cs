@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 
 namespace ProximityLib.Double
 {
@@ -88,6 +89,8 @@ namespace ProximityLib.Double
             return new Obb2(center, ax, new Vector2D(hx, hy));
         }
 
+        // Inlined, as Aabb3.ToBox is.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal Box ToBox()
         {
             var x = AxisX;

@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 
 namespace ProximityLib.Double
 {
@@ -142,6 +143,8 @@ namespace ProximityLib.Double
             return new Obb3(center, frame._x, frame._y, frame._z, new Vector3D(hx, hy, hz), true);
         }
 
+        // Inlined, as Aabb3.ToBox is.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal Box ToBox() => new Box(Center, AxisX, AxisY, AxisZ, -HalfExtents, HalfExtents, false);
 
         internal static void CheckHalfExtents(Vector3D h)

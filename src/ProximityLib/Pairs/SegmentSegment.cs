@@ -1,4 +1,3 @@
-using System;
 using System.Runtime.CompilerServices;
 
 namespace ProximityLib.Double
@@ -12,9 +11,19 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult2 Core(Segment2 a, Segment2 b, out bool inRange) => Kernels.SegmentSegment(a.Start.To3(), a.End.To3(), b.Start.To3(), b.End.To3(), out inRange).To2();
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static double DistanceCore(Segment3 a, Segment3 b, out bool inRange) => Math.Sqrt(Kernels.SegmentSegmentCore(a.Start, a.End, b.Start, b.End, out _, out _, out inRange));
+        internal static double DistanceCore(Segment3 a, Segment3 b, out bool inRange)
+        {
+            double d = Kernels.SegmentSegmentDistance(a.Start, a.End, b.Start, b.End);
+            inRange = !double.IsNaN(d);
+            return d;
+        }
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static double DistanceCore(Segment2 a, Segment2 b, out bool inRange) => Math.Sqrt(Kernels.SegmentSegmentCore(a.Start.To3(), a.End.To3(), b.Start.To3(), b.End.To3(), out _, out _, out inRange));
+        internal static double DistanceCore(Segment2 a, Segment2 b, out bool inRange)
+        {
+            double d = Kernels.SegmentSegmentDistance(a.Start.To3(), a.End.To3(), b.Start.To3(), b.End.To3());
+            inRange = !double.IsNaN(d);
+            return d;
+        }
     }
 
     public static partial class ProximityQuery

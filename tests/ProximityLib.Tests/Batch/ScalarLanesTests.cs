@@ -24,7 +24,7 @@ namespace ProximityTests.Batch
 
         private static float Size(Random r, float scale) => r.Next(5) switch { 0 => 0, 1 => Edge[r.Next(Edge.Length)] is var e && e > 0 ? e : 1, _ => (float)r.NextDouble() * scale };
 
-        private sealed class Sets
+        internal sealed class Sets
         {
             public readonly Vector3[] Points;
             public readonly F.Sphere[] Spheres, Spheres2;

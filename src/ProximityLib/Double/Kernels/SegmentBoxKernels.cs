@@ -168,6 +168,7 @@ namespace ProximityLib.Double
         }
 
         /// <summary>A segment × box-edge direction (unnormalised): the segment projects to p along it, the box to [−r, r].</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static void TryCrossAxis(Vector3D axis, double p, double r, ref double best, ref Vector3D push)
         {
             double len2 = axis.LengthSquared;
@@ -185,6 +186,21 @@ namespace ProximityLib.Double
             var ra = a - box.Origin;
             inRange = Range.Box(Math.Max(Range.MaxAbs(ra), Math.Max(Range.MaxAbs(b - box.Origin), Range.MaxAbs(box.Hi - box.Lo))));
             return SegmentBoxOverlapsLocal(box.ToLocal(ra) - box.LocalCenter, box.ToLocal(b - a), box.Half, box.Planar);
+        }
+
+        /// <summary>
+        /// <see cref="SegmentBoxOverlaps(Vector3D, Vector3D, in Box, out bool)"/> for an AABB given by its corners: its
+        /// frame is the world's shifted to min, so the test sees the same values as through <see cref="Aabb3.ToBox"/>
+        /// (a dot product with a unit axis is exact) without forming the 150-byte box.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool SegmentAabbOverlaps(Vector3D a, Vector3D b, Vector3D min, Vector3D max, bool planar, out bool inRange)
+        {
+            var ra = a - min;
+            var extent = max - min;
+            inRange = Range.Box(Math.Max(Range.MaxAbs(ra), Math.Max(Range.MaxAbs(b - min), Range.MaxAbs(extent))));
+            var half = extent * 0.5;
+            return SegmentBoxOverlapsLocal(ra - half, b - a, half, planar);
         }
 
         /// <summary>Segment–box overlap by the separating-axis test in the box frame, no square roots, early outs.</summary>

@@ -1,6 +1,7 @@
 // Copied from src/ProximityLib/Double/Obb2.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
 #nullable enable
 using System;
+using System.Runtime.CompilerServices;
 
 namespace ProximityLib.Double
 {
@@ -90,6 +91,8 @@ namespace ProximityLib.Double
             return new Obb2(center, ax, new Vector2D(hx, hy));
         }
 
+        // Inlined, as Aabb3.ToBox is.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal Box ToBox()
         {
             var x = AxisX;

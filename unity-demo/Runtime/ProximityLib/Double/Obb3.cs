@@ -1,6 +1,7 @@
 // Copied from src/ProximityLib/Double/Obb3.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
 #nullable enable
 using System;
+using System.Runtime.CompilerServices;
 
 namespace ProximityLib.Double
 {
@@ -144,6 +145,8 @@ namespace ProximityLib.Double
             return new Obb3(center, frame._x, frame._y, frame._z, new Vector3D(hx, hy, hz), true);
         }
 
+        // Inlined, as Aabb3.ToBox is.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal Box ToBox() => new Box(Center, AxisX, AxisY, AxisZ, -HalfExtents, HalfExtents, false);
 
         internal static void CheckHalfExtents(Vector3D h)

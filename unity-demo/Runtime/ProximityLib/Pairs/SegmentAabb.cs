@@ -17,8 +17,8 @@ namespace ProximityLib.Double
     public static partial class ProximityQuery
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Segment3 a, Aabb3 b, out bool inRange) => Kernels.SegmentBoxOverlaps(a.Start, a.End, b.ToBox(), out inRange);
+        internal static bool Core(Segment3 a, Aabb3 b, out bool inRange) => Kernels.SegmentAabbOverlaps(a.Start, a.End, b.Min, b.Max, false, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Segment2 a, Aabb2 b, out bool inRange) => Kernels.SegmentBoxOverlaps(a.Start.To3(), a.End.To3(), b.ToBox(), out inRange);
+        internal static bool Core(Segment2 a, Aabb2 b, out bool inRange) => Kernels.SegmentAabbOverlaps(a.Start.To3(), a.End.To3(), b.Min.To3(), b.Max.To3(), true, out inRange);
     }
 }

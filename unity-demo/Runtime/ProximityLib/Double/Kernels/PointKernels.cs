@@ -60,8 +60,9 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// Point against segment. <paramref name="inRange"/>: the squared gap and the segment's squared length lie in the
-        /// fast range, see <see cref="Range"/> (an exact 0, the point on the segment or a segment that is a point, takes
-        /// the slow path: rare, and answered exactly there). The push-out normal is formed only when
+        /// fast range (see <see cref="Range"/>), or are exactly 0 because the residual vector is (the point on the
+        /// segment, as touching inputs often are) or the segment is one point: a zero that no underflow made, answered
+        /// here as the slow path would answer it. The push-out normal is formed only when
         /// <paramref name="withNormal"/> (a constant at every call, so the other branch compiles away): a point's result
         /// never reads it.
         /// </summary>
@@ -70,7 +71,7 @@ namespace ProximityLib.Double
         {
             var r = PointSegmentResidual(p, a, b, out double t, out double dd);
             double r2 = r.LengthSquared, dist = Math.Sqrt(r2);
-            inRange = Range.In(r2) & Range.In(dd);
+            inRange = Range.Length2(r, r2) & (Range.In(dd) | a == b);
             return new PointContact(dist, r2, SegmentPoint(a, b, t), withNormal ? SegmentNormal(r, r2, dist, a, b, t, dd) : default, t);
         }
 
@@ -130,7 +131,7 @@ namespace ProximityLib.Double
         {
             var r = p - center;
             double r2 = r.LengthSquared, len = Math.Sqrt(r2);
-            inRange = Range.In(r2);
+            inRange = Range.Length2(r, r2); // an exact 0 (the point at the centre) is no underflow
             // Coincident centres have no preferred direction: +X is documented and keeps the 2D API planar.
             var n = len > 0 ? r * (1 / len) : Vector3D.UnitX;
             double d = len - radius;
@@ -171,8 +172,9 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double PointSegmentDistance(Vector3D p, Vector3D a, Vector3D b, out bool inRange)
         {
-            double r2 = PointSegmentResidual(p, a, b, out _, out double dd).LengthSquared;
-            inRange = Range.In(r2) & Range.In(dd);
+            var r = PointSegmentResidual(p, a, b, out _, out double dd);
+            double r2 = r.LengthSquared;
+            inRange = Range.Length2(r, r2) & (Range.In(dd) | a == b);
             return Math.Sqrt(r2);
         }
 
@@ -180,8 +182,9 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double PointSphereDistance(Vector3D p, Vector3D center, double radius, out bool inRange)
         {
-            double r2 = (p - center).LengthSquared;
-            inRange = Range.In(r2);
+            var r = p - center;
+            double r2 = r.LengthSquared;
+            inRange = Range.Length2(r, r2);
             return Math.Sqrt(r2) - radius;
         }
 
@@ -310,7 +313,7 @@ namespace ProximityLib.Double
         {
             var d = b - a;
             double d2 = d.LengthSquared;
-            inRange = Range.In(d2);
+            inRange = Range.Length2(d, d2); // equal points: an exact 0, no underflow
             return new DistanceResult3(Math.Sqrt(d2), d2, a, b, 0, 0);
         }
 
@@ -329,7 +332,7 @@ namespace ProximityLib.Double
             double r = ra + rb, dist = len - r;
             // As for a point and a sphere of radius ra + rb; that sum is the only other quantity that could overflow while
             // the answer is finite.
-            inRange = Range.In(d2) & r <= double.MaxValue;
+            inRange = Range.Length2(d, d2) & r <= double.MaxValue;
             // Shapes store no −0 (see Num.NoNegativeZero), so where the centres agree in a coordinate d is +0 in either
             // order and the witnesses' zero signs agree too.
             return new DistanceResult3(dist, dist > 0 ? dist * dist : 0, ca + n * ra, cb - n * rb, 0, 0);
@@ -339,8 +342,9 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double PointPointDistance(Vector3D a, Vector3D b, out bool inRange)
         {
-            double d2 = (b - a).LengthSquared;
-            inRange = Range.In(d2);
+            var d = b - a;
+            double d2 = d.LengthSquared;
+            inRange = Range.Length2(d, d2);
             return Math.Sqrt(d2);
         }
 
@@ -348,9 +352,10 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double SphereSphereDistance(Vector3D ca, double ra, Vector3D cb, double rb, out bool inRange)
         {
-            double d2 = (cb - ca).LengthSquared;
+            var d = cb - ca;
+            double d2 = d.LengthSquared;
             double r = ra + rb;
-            inRange = Range.In(d2) & r <= double.MaxValue;
+            inRange = Range.Length2(d, d2) & r <= double.MaxValue;
             return Math.Sqrt(d2) - r;
         }
 

@@ -1,0 +1,231 @@
+using System;
+using System.Numerics;
+using System.Threading;
+using NUnit.Framework;
+using ProximityLib.Batch;
+
+namespace ProximityTests.Batch
+{
+    /// <summary>
+    /// The multi-core batch: every batch query split over threads gives the one-thread bits (distances) and verdicts, on
+    /// counts around the threshold and not multiples of the vector width; every lane is computed once, in chunks that
+    /// start on a vector boundary, helpers really take part, and a warm call allocates nothing on the calling thread.
+    /// Splitting is forced with four "cores" and threads, so it is exercised on any machine.
+    /// </summary>
+    public class WorkersTests
+    {
+        /// <summary>Shapes for every test, sliced to each count (building them is the slow part).</summary>
+        private static readonly Lazy<ScalarLanesTests.Sets> Shapes = new Lazy<ScalarLanesTests.Sets>(() => new ScalarLanesTests.Sets(MaxCount, 5));
+        private const int MaxCount = 3 * Workers.ChunkLanes * 7 + 5;
+
+        private int _savedCores, _savedThreads;
+        private bool _savedVectorized;
+
+        [SetUp]
+        public void Save()
+        {
+            _savedCores = Workers.Cores;
+            _savedThreads = BatchQuery.MaxDegreeOfParallelism;
+            _savedVectorized = Runner.Vectorized;
+            Workers.Cores = 4;
+            BatchQuery.MaxDegreeOfParallelism = 4;
+        }
+
+        [TearDown]
+        public void Restore()
+        {
+            Workers.Cores = _savedCores;
+            BatchQuery.MaxDegreeOfParallelism = _savedThreads;
+            Runner.Vectorized = _savedVectorized;
+        }
+
+        private static T[] Run<T>(int threads, int n, Action<T[]> query)
+        {
+            BatchQuery.MaxDegreeOfParallelism = threads;
+            var result = new T[n + 1];
+            query(result);
+            return result;
+        }
+
+        private static void SameBits(string name, int n, Action<float[]> query)
+        {
+            var alone = Run(1, n, query);
+            var split = Run(4, n, query);
+            // NaN lanes included (the sets reach beyond the batch range): the same code gives the same NaN.
+            int i = 0;
+            while (i <= n && BitConverter.SingleToInt32Bits(split[i]) == BitConverter.SingleToInt32Bits(alone[i])) i++;
+            Assert.That(i, Is.EqualTo(n + 1), () => $"{name}, lane {i} of {n}: split {split[i]:R}, one thread {alone[i]:R}");
+        }
+
+        private static void SameVerdicts(string name, int n, Action<bool[]> query)
+        {
+            var alone = Run<bool>(1, n, query);
+            var split = Run<bool>(4, n, query);
+            int i = 0;
+            while (i <= n && split[i] == alone[i]) i++;
+            Assert.That(i, Is.EqualTo(n + 1), () => $"{name}, lane {i} of {n}: split {split[i]}, one thread {alone[i]}");
+        }
+
+        [TestCase(Workers.Threshold - 1, true), TestCase(Workers.Threshold, true), TestCase(Workers.Threshold + 1, true),
+         TestCase(70001, true), TestCase(70001, false), TestCase(MaxCount, true)]
+        public void SplitRunsGiveTheOneThreadResults(int n, bool vectorized)
+        {
+            Runner.Vectorized = vectorized;
+            var s = Shapes.Value;
+            var points = new PointSet(s.Points.AsSpan(0, n));
+            var spheres = new SphereSet(s.Spheres.AsSpan(0, n));
+            var spheres2 = new SphereSet(s.Spheres2.AsSpan(0, n));
+            var boxes = new AabbSet(s.Boxes.AsSpan(0, n));
+            var boxes2 = new AabbSet(s.Boxes2.AsSpan(0, n));
+            var obbs = new ObbSet(s.Obbs.AsSpan(0, n));
+            var obbs2 = new ObbSet(s.Obbs2.AsSpan(0, n));
+            var segments = new SegmentSet(s.Segments.AsSpan(0, n));
+            var segments2 = new SegmentSet(s.Segments2.AsSpan(0, n));
+            int j = n / 3;
+            SameBits("sphere–sphere", n, x => BatchQuery.Distances(spheres, spheres2, x));
+            SameBits("sphere–sphere one", n, x => BatchQuery.Distances(s.Spheres[j], spheres2, x));
+            SameVerdicts("sphere–sphere", n, x => BatchQuery.Overlaps(spheres, spheres2, x));
+            SameVerdicts("sphere–sphere one", n, x => BatchQuery.Overlaps(s.Spheres[j], spheres2, x));
+            SameBits("point–AABB", n, x => BatchQuery.Distances(points, boxes, x));
+            SameBits("point–AABB one", n, x => BatchQuery.Distances(s.Points[j], boxes, x));
+            SameVerdicts("point–AABB", n, x => BatchQuery.Overlaps(points, boxes, x));
+            SameVerdicts("point–AABB one", n, x => BatchQuery.Overlaps(s.Points[j], boxes, x));
+            SameBits("sphere–AABB", n, x => BatchQuery.Distances(spheres, boxes2, x));
+            SameBits("sphere–AABB one", n, x => BatchQuery.Distances(s.Spheres[j], boxes2, x));
+            SameVerdicts("sphere–AABB", n, x => BatchQuery.Overlaps(spheres, boxes2, x));
+            SameVerdicts("sphere–AABB one", n, x => BatchQuery.Overlaps(s.Spheres[j], boxes2, x));
+            SameVerdicts("AABB–AABB", n, x => BatchQuery.Overlaps(boxes, boxes2, x));
+            SameVerdicts("AABB–AABB one", n, x => BatchQuery.Overlaps(s.Boxes[j], boxes2, x));
+            SameBits("sphere–OBB", n, x => BatchQuery.Distances(spheres, obbs, x));
+            SameBits("sphere–OBB one", n, x => BatchQuery.Distances(s.Spheres[j], obbs, x));
+            SameVerdicts("sphere–OBB", n, x => BatchQuery.Overlaps(spheres, obbs, x));
+            SameVerdicts("sphere–OBB one", n, x => BatchQuery.Overlaps(s.Spheres[j], obbs, x));
+            SameBits("segment–segment", n, x => BatchQuery.Distances(segments, segments2, x));
+            SameBits("segment–segment one", n, x => BatchQuery.Distances(s.Segments[j], segments2, x));
+            SameVerdicts("OBB–OBB", n, x => BatchQuery.Overlaps(obbs, obbs2, x));
+            SameVerdicts("OBB–OBB one", n, x => BatchQuery.Overlaps(s.Obbs[j], obbs2, x));
+        }
+
+        [Test]
+        public void SplitsFromTheThresholdWhenMoreThanOneThreadIsAllowed()
+        {
+            var kernel = new Recorder(Workers.Threshold, -1);
+            Assert.That(Workers.Values(kernel, Workers.Threshold - 1, new float[Workers.Threshold]), Is.False);
+            Assert.That(Workers.NonPositive(kernel, Workers.Threshold - 1, new bool[Workers.Threshold]), Is.False);
+            Assert.That(Workers.Values(kernel, Workers.Threshold, new float[Workers.Threshold]), Is.True);
+            Assert.That(Workers.NonPositive(kernel, Workers.Threshold, new bool[Workers.Threshold]), Is.True);
+            BatchQuery.MaxDegreeOfParallelism = 1;
+            Assert.That(Workers.Values(kernel, Workers.Threshold, new float[Workers.Threshold]), Is.False);
+            BatchQuery.MaxDegreeOfParallelism = 2;
+            Workers.Cores = 1;
+            Assert.That(Workers.NonPositive(kernel, Workers.Threshold, new bool[Workers.Threshold]), Is.False);
+        }
+
+        [TestCase(true), TestCase(false)]
+        public void EveryLaneOnceInVectorAlignedChunksWithHelpersTakingPart(bool vectorized)
+        {
+            Runner.Vectorized = vectorized;
+            const int n = Workers.Threshold * 2 + 13;
+            var kernel = new Recorder(n, Environment.CurrentManagedThreadId);
+            var values = new float[n + 1];
+            values[n] = 42;
+            Runner.Values(kernel, n, values);
+            for (int i = 0; i < n; i++)
+            {
+                if (kernel.Hits[i] != 1) Assert.Fail($"lane {i} computed {kernel.Hits[i]} times");
+                if (values[i] != i) Assert.Fail($"lane {i} holds {values[i]}");
+            }
+            Assert.That(values[n], Is.EqualTo(42), "a lane past the count");
+            Assert.That(kernel.Misaligned[0], Is.Zero, "vector computations not starting on a vector boundary");
+            Assert.That(kernel.HelperLanes[0], Is.GreaterThan(0), "lanes computed by a helper thread");
+
+            Array.Clear(kernel.Hits, 0, kernel.Hits.Length);
+            kernel.HelperLanes[0] = 0;
+            var verdicts = new bool[n];
+            Runner.NonPositive(kernel, n, verdicts);
+            for (int i = 0; i < n; i++)
+            {
+                if (kernel.Hits[i] != 1) Assert.Fail($"verdict {i} computed {kernel.Hits[i]} times");
+                if (verdicts[i] != (i == 0)) Assert.Fail($"verdict {i} is {verdicts[i]}");
+            }
+            Assert.That(kernel.HelperLanes[0], Is.GreaterThan(0), "verdicts computed by a helper thread");
+        }
+
+        [Test]
+        public void AWarmSplitCallAllocatesNothingOnTheCallingThread()
+        {
+            var s = Shapes.Value;
+            var obbs = new ObbSet(s.Obbs);
+            var obbs2 = new ObbSet(s.Obbs2);
+            var spheres = new SphereSet(s.Spheres);
+            var values = new float[MaxCount];
+            var verdicts = new bool[MaxCount];
+            BatchQuery.MaxDegreeOfParallelism = 4;
+            BatchQuery.Overlaps(obbs, obbs2, verdicts);
+            BatchQuery.Distances(s.Spheres[0], spheres, values);
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            BatchQuery.Overlaps(obbs, obbs2, verdicts);
+            BatchQuery.Distances(s.Spheres[0], spheres, values);
+            Assert.That(GC.GetAllocatedBytesForCurrentThread() - before, Is.EqualTo(0));
+        }
+
+        [Test]
+        public void BadArgumentsAreRefusedBeforeTheSplit()
+        {
+            var s = Shapes.Value;
+            var spheres = new SphereSet(s.Spheres);
+            var fewer = new SphereSet(s.Spheres2.AsSpan(1));
+            Assert.That(() => BatchQuery.Distances(spheres, fewer, new float[MaxCount]), Throws.ArgumentException.With.Property("ParamName").EqualTo("b"));
+            Assert.That(() => BatchQuery.Overlaps(s.Spheres[0], spheres, new bool[MaxCount - 1]), Throws.ArgumentException.With.Property("ParamName").EqualTo("result"));
+            Assert.That(() => BatchQuery.MaxDegreeOfParallelism = 0, Throws.ArgumentException.With.Property("ParamName").EqualTo("value"));
+        }
+
+        /// <summary>
+        /// A kernel whose lane i is i − 0 (so only lane 0 is ≤ 0) and which records, across threads, how often each lane
+        /// was computed, vector computations off a vector boundary, and lanes computed off the calling thread. The caller
+        /// waits in its first chunk (up to 10 s) until a helper has computed something, so a helper must take part.
+        /// </summary>
+        private readonly struct Recorder : IKernel
+        {
+            public readonly int[] Hits, Misaligned, HelperLanes;
+            private readonly int _caller;
+
+            public Recorder(int n, int caller)
+            {
+                Hits = new int[n + Vector<float>.Count];
+                Misaligned = new int[1];
+                HelperLanes = new int[1];
+                _caller = caller;
+            }
+
+            public Vector<float> Compute(int i)
+            {
+                if (i % Vector<float>.Count != 0) Interlocked.Increment(ref Misaligned[0]);
+                for (int k = 0; k < Vector<float>.Count; k++) Record(i + k);
+                Span<float> lanes = stackalloc float[Vector<float>.Count];
+                for (int k = 0; k < lanes.Length; k++) lanes[k] = i + k;
+                return new Vector<float>(lanes);
+            }
+
+            public float Lane(int i)
+            {
+                Record(i);
+                return i;
+            }
+
+            private void Record(int i)
+            {
+                Interlocked.Increment(ref Hits[i]);
+                if (_caller < 0) return;
+                if (Environment.CurrentManagedThreadId != _caller)
+                {
+                    Interlocked.Increment(ref HelperLanes[0]);
+                    return;
+                }
+                if (i != 0) return;
+                var wait = System.Diagnostics.Stopwatch.StartNew();
+                while (Volatile.Read(ref HelperLanes[0]) == 0 && wait.ElapsedMilliseconds < 10000) Thread.Yield();
+            }
+        }
+    }
+}
