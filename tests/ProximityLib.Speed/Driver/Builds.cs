@@ -35,7 +35,7 @@ namespace ProximitySpeed
         /// <summary>
         /// The Mono probe: the library and scene sources compiled by the SDK's Roslyn against Mono's own class libraries
         /// (as tests/ProximityLib.MonoCheck/run.sh and Unity do: -nostdlib, lib/mono/4.5 and Facades/netstandard.dll, C# 9,
-        /// no NET define, so the netstandard2.1 code paths), then the cases and Probe/ into one program. Returns its path.
+        /// unsafe code allowed, no NET define, so the netstandard2.1 code paths), then the cases and Probe/ into one program. Returns its path.
         /// </summary>
         public static string Mono(string work)
         {
@@ -48,7 +48,8 @@ namespace ProximitySpeed
             string Sources(string project) => string.Join("\n", Directory.GetFiles(Path.Combine(Root, "src", project), "*.cs", SearchOption.AllDirectories)
                 .Where(f => !f.Contains("/obj/") && !f.Contains("/bin/")).OrderBy(f => f, StringComparer.Ordinal));
             string library = Path.Combine(work, "ProximityLib.dll"), scenes = Path.Combine(work, "ProximityLib.Scenes.dll");
-            Csc(work, refs, "-t:library", "-out:" + library, Sources("ProximityLib"));
+            // The library's batch runner pins spans (unsafe), as its csproj and Unity asmdef allow.
+            Csc(work, refs, "-t:library", "-unsafe+", "-out:" + library, Sources("ProximityLib"));
             Csc(work, refs, "-t:library", "-out:" + scenes, "-r:" + library, Sources("ProximityLib.Scenes"));
             string probe = Path.Combine(work, "ProximityLib.Speed.Probe.exe");
             var probeSources = CaseSources(true).Concat(Directory.GetFiles(Path.Combine(Root, "tests", "ProximityLib.Speed", "Probe"), "*.cs"));
@@ -99,6 +100,7 @@ namespace ProximitySpeed
                   <PropertyGroup>
                     <TargetFramework>net10.0</TargetFramework>
                     <AssemblyName>ProximityLibOld</AssemblyName>
+                    <AllowUnsafeBlocks>true</AllowUnsafeBlocks>
                     <LangVersion>9.0</LangVersion>
                     <Nullable>enable</Nullable>
                     <Optimize>true</Optimize>
