@@ -1,19 +1,71 @@
 using System;
 using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Text;
 using ProximityLib.Double;
 using ProximityReference;
 using Dbl = ProximityLib.Double;
 
-namespace ProximityBenchmarks
+namespace ProximitySpeed
 {
-    /// <summary>Seeded query inputs in three distributions: all apart, all overlapping, and half and half shuffled.</summary>
+    /// <summary>
+    /// Seeded query inputs in three distributions (all apart, all overlapping, half and half shuffled), written once per
+    /// run to the file every probe reads (ProximityLib.Speed.Cases/InputSet.cs), so every mode, process and library
+    /// version measures the same pairs.
+    /// </summary>
     public static class Inputs
     {
         public const int Count = 1024;
-        public static readonly string[] Distributions = { "apart", "overlapping", "mixed" };
+        public static readonly string[] Distributions = { "mixed", "apart", "overlapping" };
+
+        private static readonly string[] Kinds = { "point", "segment", "sphere", "AABB", "OBB" };
+
+        /// <summary>Every query of the library, "3D point–point" … "2D OBB–OBB", one per unordered pair of kinds.</summary>
+        public static IEnumerable<string> Queries()
+        {
+            foreach (int dim in new[] { 3, 2 })
+                for (int i = 0; i < Kinds.Length; i++)
+                    for (int j = i; j < Kinds.Length; j++)
+                        yield return $"{dim}D {Name(Kinds[i], dim)}–{Name(Kinds[j], dim)}";
+        }
+
+        private static string Name(string kind, int dim) => dim == 2 && kind == "sphere" ? "circle" : kind;
+
+        public static void Write(string path, string distribution, int seed = 7)
+        {
+            var text = new StringBuilder();
+            text.Append($"# ProximityLib speed inputs: {distribution}, seed {seed}, {Count} pairs per query\n");
+            foreach (var query in Queries())
+            {
+                text.Append("query ").Append(query).Append('\n');
+                foreach (var (a, b) in Make(query, distribution, seed))
+                    text.Append(string.Join(" ", Numbers(a).Select(R))).Append(" | ").Append(string.Join(" ", Numbers(b).Select(R))).Append('\n');
+            }
+            File.WriteAllText(path, text.ToString());
+        }
+
+        private static string R(double x) => x.ToString("R", CultureInfo.InvariantCulture);
+
+        /// <summary>The numbers that define a shape, in the order InputSet documents.</summary>
+        private static IEnumerable<double> Numbers(object shape) => shape switch
+        {
+            Vector3D p => new[] { p.X, p.Y, p.Z },
+            Vector2D p => new[] { p.X, p.Y },
+            Dbl.Segment3 s => Numbers(s.Start).Concat(Numbers(s.End)),
+            Dbl.Segment2 s => Numbers(s.Start).Concat(Numbers(s.End)),
+            Dbl.Sphere s => Numbers(s.Center).Append(s.Radius),
+            Dbl.Circle s => Numbers(s.Center).Append(s.Radius),
+            Dbl.Aabb3 b => Numbers(b.Min).Concat(Numbers(b.Max)),
+            Dbl.Aabb2 b => Numbers(b.Min).Concat(Numbers(b.Max)),
+            Dbl.Obb3 b => new[] { b.Center, b.AxisX, b.AxisY, b.AxisZ, b.HalfExtents }.SelectMany(v => Numbers(v)),
+            Dbl.Obb2 b => new[] { b.Center, b.AxisX, b.HalfExtents }.SelectMany(v => Numbers(v)),
+            _ => throw new ArgumentException(shape.GetType().Name),
+        };
 
         /// <summary>Pairs of double-API shapes of the query's kinds ("3D sphere–OBB").</summary>
-        public static (object A, object B)[] Make(string query, string distribution, int seed = 7)
+        private static (object A, object B)[] Make(string query, string distribution, int seed)
         {
             int dim = query[0] - '0';
             var kinds = query.Substring(3).Split('–');
@@ -69,20 +121,6 @@ namespace ProximityBenchmarks
                               + new Vector3D(b.AxisY.X, b.AxisY.Y, 0) * (w * b.HalfExtents.Y),
                 _ => throw new ArgumentException(shape.GetType().Name),
             };
-        }
-
-        /// <summary>The inputs in the benchmark's precision: float shapes are the double ones rounded.</summary>
-        public static (TA[] A, TB[] B) Typed<TA, TB>(string query, string distribution, bool isFloat)
-        {
-            var pairs = Make(query, distribution);
-            var a = new TA[pairs.Length];
-            var b = new TB[pairs.Length];
-            for (int i = 0; i < pairs.Length; i++)
-            {
-                a[i] = (TA)(isFloat ? Shapes.ToFloat(pairs[i].A) : pairs[i].A);
-                b[i] = (TB)(isFloat ? Shapes.ToFloat(pairs[i].B) : pairs[i].B);
-            }
-            return (a, b);
         }
     }
 }
