@@ -52,5 +52,39 @@ namespace ProximityTests.Double.Kernels
                     Is.EqualTo(ProximityLib.Double.Kernels.BoxBoxOverlapsScalar(a.ToBox(), b.ToBox())), $"case {i}");
             }
         }
+
+        /// <summary>The penetration depth search on AVX2 lanes makes the scalar form's operations per axis: the same bits.</summary>
+        [Test]
+        public void PenetrationMatchesTheScalarFormBitForBit()
+        {
+            if (!System.Runtime.Intrinsics.X86.Avx2.IsSupported) Assert.Ignore("no AVX2: only the scalar form runs here");
+            var r = new Random(11);
+            for (int i = 0; i < 3000; i++)
+            {
+                Box a, b;
+                var oa = RandomBox(r, 1, 1);
+                switch (i % 4)
+                {
+                    case 0: a = oa.ToBox(); b = RandomBox(r, 1, 1).ToBox(); break;
+                    // Stacked, nearly parallel edges.
+                    case 1:
+                        a = oa.ToBox();
+                        b = new Obb3(oa.Center + new Vector3D(0, 0, oa.HalfExtents.Z * (2 - r.NextDouble() * 1e-3)), oa.AxisX, oa.AxisY, oa.AxisZ, oa.HalfExtents).ToBox();
+                        break;
+                    // Identical centres and boxes: exact ties between axes.
+                    case 2: a = oa.ToBox(); b = oa.ToBox(); break;
+                    // Planar boxes.
+                    default:
+                        a = new Obb2(new Vector2D(r.NextDouble(), r.NextDouble()), r.NextDouble() * 7, new Vector2D(0.2 + r.NextDouble(), 0.2 + r.NextDouble())).ToBox();
+                        b = new Aabb2(new Vector2D(r.NextDouble(), r.NextDouble()), new Vector2D(1 + r.NextDouble(), 1 + r.NextDouble())).ToBox();
+                        break;
+                }
+                var t = (b.Origin + b.ToWorldOffset(b.LocalCenter)) - (a.Origin + a.ToWorldOffset(a.LocalCenter));
+                double scalar = ProximityLib.Double.Kernels.PenetrationScalar(a, b, t, out var pushScalar);
+                double vector = ProximityLib.Double.Kernels.PenetrationVector(a, b, t, out var pushVector);
+                Assert.That(BitConverter.DoubleToInt64Bits(vector), Is.EqualTo(BitConverter.DoubleToInt64Bits(scalar)), $"case {i}: depth");
+                Assert.That(pushVector, Is.EqualTo(pushScalar), $"case {i}: push");
+            }
+        }
     }
 }
