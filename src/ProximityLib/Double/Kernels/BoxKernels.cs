@@ -122,17 +122,17 @@ namespace ProximityLib.Double
         internal static Vector3D EdgeCross(Vector3D u, Vector3D v) => Vector3D.Cross(u, Vector3D.Dot(u, v) >= 0 ? v - u : v + u);
 
         /// <summary>
-        /// Squared distance between two boxes known to be apart or touching (placed at <paramref name="originA"/> and <paramref name="originB"/>), and
-        /// a pair of points realising it. The closest pair of two disjoint convex polytopes can always be taken with a
-        /// point on an edge of A or a vertex of B: where A's point lies inside a face, the contact face of B beyond it lies
-        /// inside that face too (else it would cross the face's boundary), and it has a vertex. So the minimum over A's
-        /// edges against box B and B's vertices against box A is exact; in 2D a vertex of either suffices. Each vertex is
-        /// one clamp in the other box's frame. The distance along an edge is convex, so an edge beats its own ends only if
-        /// it descends from both, which the ends' clamp residuals tell; only such edges are minimised (the closed form of
-        /// <see cref="SegmentBoxLocal"/>), in increasing order of a lower bound on their distance (their squared gaps
-        /// along B's axes, summed: no point of the edge is nearer on any axis), stopping once the next bound exceeds the
-        /// best pair (with a margin, so rounding never hides a win) or the best squared gap is at most
-        /// <paramref name="enough"/>.
+        /// Squared distance between two boxes known to be apart or touching (placed at <paramref name="originA"/> and
+        /// <paramref name="originB"/>), and a pair of points realising it. The closest pair of two disjoint convex polytopes
+        /// can always be taken with a point on an edge of A or a vertex of B: where A's point lies inside a face, the
+        /// contact face of B beyond it lies inside that face too (else it would cross the face's boundary), and it has a
+        /// vertex. So the minimum over A's edges against box B and B's vertices against box A is exact; in 2D a vertex of
+        /// either suffices. Each vertex is one clamp in the other box's frame. The distance along an edge is convex, so an
+        /// edge beats its own ends only if it descends from both, which the ends' clamp residuals tell: only such edges
+        /// are minimised (the closed form of <see cref="SegmentBoxLocal"/>), and only while a lower bound on their
+        /// distance (their squared gaps along B's axes, summed: no point of the edge is nearer on any axis) does not
+        /// exceed the best pair (with a margin, so rounding never hides a win). The search also stops once the best
+        /// squared gap is at most <paramref name="enough"/>.
         /// </summary>
         private static double BoxesApart(in Box a, Vector3D originA, in Box b, Vector3D originB, double enough, out Vector3D onA, out Vector3D onB)
         {
@@ -149,111 +149,116 @@ namespace ProximityLib.Double
             var ea = hiA - loA;
             var eb = hiB - loB;
             // A's corners in B's frame and B's in A's (bit i of the index picks Hi on axis i), and A's edge vectors.
-            Span<Vector3D> ca = stackalloc Vector3D[8];
-            Span<Vector3D> ra = stackalloc Vector3D[8];
             var dx = ax * ea.X;
             var dy = ay * ea.Y;
             var dz = az * ea.Z;
-            Corners(b.ToLocal(-d) + ax * loA.X + ay * loA.Y + az * loA.Z, dx, dy, dz, ca);
-            Span<Vector3D> cb = stackalloc Vector3D[8];
-            Corners(a.ToLocal(d) + bx * loB.X + by * loB.Y + bz * loB.Z, bx * eb.X, by * eb.Y, bz * eb.Z, cb);
+            var pa = b.ToLocal(-d) + ax * loA.X + ay * loA.Y + az * loA.Z;
+            var ex = bx * eb.X;
+            var ey = by * eb.Y;
+            var ez = bz * eb.Z;
+            var pb = a.ToLocal(d) + bx * loB.X + by * loB.Y + bz * loB.Z;
 
-            // Every vertex against the other box: 4 of each when planar (the z bit picks the same corner).
-            int n = planar ? 4 : 8;
-            double best = double.PositiveInfinity;
-            int win = 0; // 0–7: A's corner; 8–15: B's corner; 16 + 4i + k: A's k-th edge along axis i
+            // Every vertex against the other box, and the edges of A to minimise (bit 8i + c: the edge from corner c along
+            // axis i). win: 0–7 A's corner, 8–15 B's corner, 16 + 8i + c that edge.
+            double best = Vertices(pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA, planar, out int win, out uint edges);
             double winT = 0;
-            for (int c = 0; c < n; c++)
+            // Those whose lower bound does not exceed the best pair, until the best is good enough.
+            for (int bit = 0; edges >> bit != 0 && best > enough; bit++)
             {
-                var r = Residual(ca[c], loB, hiB);
-                ra[c] = r;
-                double g = r.LengthSquared;
-                if (g < best) { best = g; win = c; }
-            }
-            for (int c = 0; c < n; c++)
-            {
-                double g = Residual(cb[c], loA, hiA).LengthSquared;
-                if (g < best) { best = g; win = 8 + c; }
-            }
-
-            if (!planar && best > enough)
-            {
-                // A's edges that descend from both ends (slope d·r < 0 leaving the first, > 0 arriving at the second),
-                // with the lower bound of each.
-                Span<double> bound = stackalloc double[12];
-                Span<int> edge = stackalloc int[12];
-                int m = 0;
-                for (int i = 0; i < 3; i++)
-                {
-                    var dir = i == 0 ? dx : (i == 1 ? dy : dz);
-                    for (int k = 0; k < 4; k++)
-                    {
-                        int from = Spread(k, i), to = from | (1 << i);
-                        if (!(Vector3D.Dot(dir, ra[from]) < 0 && Vector3D.Dot(dir, ra[to]) > 0)) continue;
-                        double lb = SpanGap2(ca[from], ca[to], loB, hiB);
-                        if (lb > best * (1 + 1e-9)) continue;
-                        bound[m] = lb;
-                        edge[m++] = 4 * i + k;
-                    }
-                }
-                // Nearest bound first.
-                while (m > 0)
-                {
-                    int next = 0;
-                    for (int j = 1; j < m; j++)
-                        if (bound[j] < bound[next]) next = j;
-                    if (bound[next] > best * (1 + 1e-9)) break;
-                    int e = edge[next];
-                    bound[next] = bound[--m];
-                    edge[next] = edge[m];
-                    int i = e >> 2;
-                    var dir = i == 0 ? dx : (i == 1 ? dy : dz);
-                    double g = SegmentBoxLocal(ca[Spread(e & 3, i)], dir, loB, hiB, out double t);
-                    if (g < best) { best = g; win = 16 + e; winT = t; }
-                    if (best <= enough) break;
-                }
+                if (((edges >> bit) & 1) == 0) continue;
+                int i = bit >> 3, from = bit & 7;
+                var dir = i == 0 ? dx : (i == 1 ? dy : dz);
+                var p = Corner(pa, dx, dy, dz, from);
+                if (SpanGap2(p, Corner(pa, dx, dy, dz, from | (1 << i)), loB, hiB) > best * (1 + 1e-9)) continue;
+                double g = SegmentBoxLocal(p, dir, loB, hiB, out double t);
+                if (g < best) { best = g; win = 16 + bit; winT = t; }
             }
 
             // The winning pair in world coordinates, from its box-local coordinates.
             if (win < 8)
             {
                 onA = originA + a.ToWorldOffset(Corner(loA, hiA, win));
-                onB = originB + b.ToWorldOffset(Clamp(ca[win], loB, hiB));
+                onB = originB + b.ToWorldOffset(Clamp(Corner(pa, dx, dy, dz, win), loB, hiB));
             }
             else if (win < 16)
             {
                 onB = originB + b.ToWorldOffset(Corner(loB, hiB, win - 8));
-                onA = originA + a.ToWorldOffset(Clamp(cb[win - 8], loA, hiA));
+                onA = originA + a.ToWorldOffset(Clamp(Corner(pb, ex, ey, ez, win - 8), loA, hiA));
             }
             else
             {
-                int i = (win - 16) >> 2, from = Spread((win - 16) & 3, i);
+                int i = (win - 16) >> 3, from = (win - 16) & 7;
                 var dir = i == 0 ? dx : (i == 1 ? dy : dz);
                 var local = Corner(loA, hiA, from);
                 double lo = Vec.Get(loA, i), hi = Vec.Get(hiA, i), x = winT <= 0.5 ? lo + (hi - lo) * winT : hi - (hi - lo) * (1 - winT);
                 local = new Vector3D(i == 0 ? x : local.X, i == 1 ? x : local.Y, i == 2 ? x : local.Z);
                 onA = originA + a.ToWorldOffset(local);
-                onB = originB + b.ToWorldOffset(Clamp(ca[from] + dir * winT, loB, hiB));
+                onB = originB + b.ToWorldOffset(Clamp(Corner(pa, dx, dy, dz, from) + dir * winT, loB, hiB));
             }
             return best;
         }
 
-        /// <summary>The eight corners p + any sum of dx, dy, dz (bit i of the index adds the i-th).</summary>
-        private static void Corners(Vector3D p, Vector3D dx, Vector3D dy, Vector3D dz, Span<Vector3D> corner)
+        /// <summary>
+        /// The least squared gap of A's corners (pa + sums of dx, dy, dz; B's frame) to B's box [loB, hiB] and of B's
+        /// corners to A's box, and which corner (0–7 A's, 8–15 B's, the first of equal ones); 4 of each when planar (the
+        /// z bit picks the same corner). In 3D also A's edges that descend from both ends (bit 8i + c: the edge from
+        /// corner c along axis i, whose slope dir·r is &lt; 0 at c and &gt; 0 at its other end, r the clamp residual): the
+        /// distance along an edge is convex, so only these can beat their ends.
+        /// </summary>
+        private static double Vertices(Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
+            Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA, bool planar, out int win, out uint edges)
         {
-            corner[0] = p;
-            corner[1] = p + dx;
-            corner[2] = p + dy;
-            corner[3] = corner[1] + dy;
-            corner[4] = p + dz;
-            corner[5] = corner[1] + dz;
-            corner[6] = corner[2] + dz;
-            corner[7] = corner[3] + dz;
+#if NET
+            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported) return VerticesVector(pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA, planar, out win, out edges);
+#endif
+            return VerticesScalar(pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA, planar, out win, out edges);
         }
 
-        /// <summary>The k-th (0–3) corner index with bit i clear: k's two bits spread over the other two axes.</summary>
+        /// <summary>The scalar form of <see cref="Vertices"/>: the only one on netstandard2.1 (Unity) and without AVX2.</summary>
+        internal static double VerticesScalar(Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
+            Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA, bool planar, out int win, out uint edges)
+        {
+            int n = planar ? 4 : 8;
+            double best = double.PositiveInfinity;
+            win = 0;
+            for (int c = 0; c < n; c++)
+            {
+                double g = Residual(Corner(pa, dx, dy, dz, c), loB, hiB).LengthSquared;
+                if (g < best) { best = g; win = c; }
+            }
+            for (int c = 0; c < n; c++)
+            {
+                double g = Residual(Corner(pb, ex, ey, ez, c), loA, hiA).LengthSquared;
+                if (g < best) { best = g; win = 8 + c; }
+            }
+            edges = 0;
+            if (planar) return best;
+            for (int i = 0; i < 3; i++)
+            {
+                var dir = i == 0 ? dx : (i == 1 ? dy : dz);
+                for (int c = 0; c < 8; c++)
+                {
+                    if ((c & (1 << i)) != 0) continue;
+                    if (Vector3D.Dot(dir, Residual(Corner(pa, dx, dy, dz, c), loB, hiB)) < 0
+                        && Vector3D.Dot(dir, Residual(Corner(pa, dx, dy, dz, c | (1 << i)), loB, hiB)) > 0)
+                        edges |= 1u << (8 * i + c);
+                }
+            }
+            return best;
+        }
+
+        /// <summary>
+        /// Corner c of the box p + [0, 1]·dx + [0, 1]·dy + [0, 1]·dz (bit i of c picks the far end on axis i): the sums in
+        /// one order, so an edge's two ends and a vertex seen twice are the same values.
+        /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static int Spread(int k, int i) => i == 0 ? k << 1 : (i == 1 ? (k & 1) | ((k & 2) << 1) : k);
+        private static Vector3D Corner(Vector3D p, Vector3D dx, Vector3D dy, Vector3D dz, int c)
+        {
+            if ((c & 1) != 0) p += dx;
+            if ((c & 2) != 0) p += dy;
+            if ((c & 4) != 0) p += dz;
+            return p;
+        }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Vector3D Corner(Vector3D lo, Vector3D hi, int c) =>
