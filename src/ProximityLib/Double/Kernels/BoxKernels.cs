@@ -56,6 +56,7 @@ namespace ProximityLib.Double
         /// Each axis's projections are formed on the axis as it is and divided by its length once (instead of normalising
         /// the axis with three divisions); on AVX2, four axes at a time (BoxKernels.Vector.cs).
         /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static double Penetration(in Box a, in Box b, Vector3D t, out Vector3D push)
         {
 #if NET
@@ -204,6 +205,7 @@ namespace ProximityLib.Double
         /// corner c along axis i, whose slope dir·r is &lt; 0 at c and &gt; 0 at its other end, r the clamp residual): the
         /// distance along an edge is convex, so only these can beat their ends.
         /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static double Vertices(Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
             Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA, bool planar, out int win, out uint edges)
         {

@@ -72,75 +72,61 @@ namespace ProximityLib.Double
         /// <summary>
         /// <see cref="Penetration"/> on AVX2 lanes: A's and B's face normals in one group (A's and B's z in a second), and
         /// a_i × b_j for the three j of each i in one group each (lane 3 is u × ±u = 0 exactly, so not an axis). Every
-        /// lane makes the operations of <see cref="TryAxis"/> on its axis, and the winner is the first least overlap in
-        /// the scalar form's order (each axis's "down" before its "up"), so both forms return the same bits.
+        /// lane makes the operations of <see cref="TryAxis"/> on its axis and keeps the smaller of its two overlaps; the
+        /// first axis holding the least (in the scalar form's order) is then tried alone by <see cref="TryAxis"/>, so both
+        /// forms return the same bits.
         /// </summary>
         internal static double PenetrationVector(in Box a, in Box b, Vector3D t, out Vector3D push)
         {
             Vector3D ax = a.X, ay = a.Y, az = a.Z, bx = b.X, by = b.Y, bz = b.Z, ha = a.Half, hb = b.Half;
-            Overlaps(a, b, ha, hb, t, Vector256.Create(ax.X, ay.X, bx.X, by.X), Vector256.Create(ax.Y, ay.Y, bx.Y, by.Y), Vector256.Create(ax.Z, ay.Z, bx.Z, by.Z),
-                out var down0, out var up0);
+            var g0 = Overlap(a, b, ha, hb, t, Vector256.Create(ax.X, ay.X, bx.X, by.X), Vector256.Create(ax.Y, ay.Y, bx.Y, by.Y),
+                Vector256.Create(ax.Z, ay.Z, bx.Z, by.Z));
             var inf = Vector256.Create(double.PositiveInfinity);
-            Vector256<double> down1 = inf, up1 = inf, down2 = inf, up2 = inf, down3 = inf, up3 = inf, down4 = inf, up4 = inf;
-            bool planar = a.Planar || b.Planar;
-            if (!planar)
+            Vector256<double> g1 = inf, g2 = inf, g3 = inf, g4 = inf;
+            if (!(a.Planar || b.Planar))
             {
-                Overlaps(a, b, ha, hb, t, Vector256.Create(az.X, bz.X, 0, 0), Vector256.Create(az.Y, bz.Y, 0, 0), Vector256.Create(az.Z, bz.Z, 0, 0), out down1, out up1);
+                g1 = Overlap(a, b, ha, hb, t, Vector256.Create(az.X, bz.X, 0, 0), Vector256.Create(az.Y, bz.Y, 0, 0), Vector256.Create(az.Z, bz.Z, 0, 0));
                 // B's axes as columns: lane j holds b_j.
                 Vector256<double> cx = Vector256.Create(bx.X, by.X, bz.X, 0), cy = Vector256.Create(bx.Y, by.Y, bz.Y, 0), cz = Vector256.Create(bx.Z, by.Z, bz.Z, 0);
-                CrossOverlaps(a, b, ha, hb, t, ax, cx, cy, cz, out down2, out up2);
-                CrossOverlaps(a, b, ha, hb, t, ay, cx, cy, cz, out down3, out up3);
-                CrossOverlaps(a, b, ha, hb, t, az, cx, cy, cz, out down4, out up4);
+                g2 = CrossOverlap(a, b, ha, hb, t, ax, cx, cy, cz);
+                g3 = CrossOverlap(a, b, ha, hb, t, ay, cx, cy, cz);
+                g4 = CrossOverlap(a, b, ha, hb, t, az, cx, cy, cz);
             }
-            var m = Vector256.Min(Vector256.Min(Vector256.Min(down0, up0), Vector256.Min(down1, up1)),
-                Vector256.Min(Vector256.Min(Vector256.Min(down2, up2), Vector256.Min(down3, up3)), Vector256.Min(down4, up4)));
+            var m = Vector256.Min(Vector256.Min(Vector256.Min(g0, g1), Vector256.Min(g2, g3)), g4);
             m = Vector256.Min(m, Avx.Permute(m, 0b0101));
             m = Vector256.Min(m, Avx.Permute2x128(m, m, 1));
-            double best = m.ToScalar();
-            push = default;
-            // The first axis (in the scalar order) holding the least value, down before up.
-            int group = 0;
-            uint dm = 0, um = 0;
-            for (; group < 5; group++)
+            // The first axis (in the scalar order) holding the least value, tried alone by the scalar form.
+            ulong hits = Vector256.Equals(g0, m).ExtractMostSignificantBits() | (Vector256.Equals(g1, m).ExtractMostSignificantBits() << 4)
+                | (Vector256.Equals(g2, m).ExtractMostSignificantBits() << 8) | (Vector256.Equals(g3, m).ExtractMostSignificantBits() << 12)
+                | ((ulong)Vector256.Equals(g4, m).ExtractMostSignificantBits() << 16);
+            double best = double.PositiveInfinity, scale = 0;
+            Vector3D axis = default;
+            if (hits != 0)
             {
-                var (dv, uv) = group switch { 0 => (down0, up0), 1 => (down1, up1), 2 => (down2, up2), 3 => (down3, up3), _ => (down4, up4) };
-                dm = Vector256.Equals(dv, m).ExtractMostSignificantBits();
-                um = Vector256.Equals(uv, m).ExtractMostSignificantBits();
-                if ((dm | um) != 0) break;
+                int bit = System.Numerics.BitOperations.TrailingZeroCount(hits), group = bit >> 2, lane = bit & 3;
+                var v = group == 0 ? (lane == 0 ? ax : lane == 1 ? ay : lane == 2 ? bx : by)
+                    : group == 1 ? (lane == 0 ? az : bz)
+                    : EdgeCross(group == 2 ? ax : group == 3 ? ay : az, lane == 0 ? bx : lane == 1 ? by : bz);
+                TryAxis(v, ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
             }
-            if (group == 5) return best; // no axis (every candidate degenerate)
-            int lane = System.Numerics.BitOperations.TrailingZeroCount(dm | um);
-            Vector3D v = group switch
-            {
-                0 => lane == 0 ? ax : lane == 1 ? ay : lane == 2 ? bx : by,
-                1 => lane == 0 ? az : bz,
-                _ => EdgeCross(group == 2 ? ax : group == 3 ? ay : az, lane == 0 ? bx : lane == 1 ? by : bz),
-            };
-            // The winner's own value (the minimum may carry the other sign of a zero).
-            bool down = ((dm >> lane) & 1) != 0;
-            var (dw, uw) = group switch { 0 => (down0, up0), 1 => (down1, up1), 2 => (down2, up2), 3 => (down3, up3), _ => (down4, up4) };
-            best = (down ? dw : uw).GetElement(lane);
-            double len = Math.Sqrt(v.LengthSquared);
-            push = v * (down ? -best / len : best / len);
+            push = axis * scale;
             return best;
         }
 
-        /// <summary>Per lane, <see cref="TryAxis"/>'s down and up for the axis (x, y, z); +∞ where it is no axis.</summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void Overlaps(in Box a, in Box b, Vector3D ha, Vector3D hb, Vector3D t, Vector256<double> x, Vector256<double> y, Vector256<double> z,
-            out Vector256<double> down, out Vector256<double> up)
+        /// <summary>
+        /// Per lane, the smaller of <see cref="TryAxis"/>'s down and up for the axis (x, y, z), +∞ where it is no axis:
+        /// (ra + rb − |sep|)/len is exactly the one of (ra + rb ∓ sep)/len with the sign of sep, one division for both.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static Vector256<double> Overlap(in Box a, in Box b, Vector3D ha, Vector3D hb, Vector3D t, Vector256<double> x, Vector256<double> y, Vector256<double> z)
         {
             var len2 = x * x + y * y + z * z;
-            var len = Vector256.Sqrt(len2);
             var ra = Vector256.Create(ha.X) * Vector256.Abs(Dot(a.X, x, y, z)) + Vector256.Create(ha.Y) * Vector256.Abs(Dot(a.Y, x, y, z))
                 + Vector256.Create(ha.Z) * Vector256.Abs(Dot(a.Z, x, y, z));
             var rb = Vector256.Create(hb.X) * Vector256.Abs(Dot(b.X, x, y, z)) + Vector256.Create(hb.Y) * Vector256.Abs(Dot(b.Y, x, y, z))
                 + Vector256.Create(hb.Z) * Vector256.Abs(Dot(b.Z, x, y, z));
-            var sep = Dot(t, x, y, z);
-            var axis = Vector256.GreaterThan(len2, Vector256<double>.Zero);
-            var inf = Vector256.Create(double.PositiveInfinity);
-            down = Vector256.ConditionalSelect(axis, (ra + rb - sep) / len, inf);
-            up = Vector256.ConditionalSelect(axis, (ra + rb + sep) / len, inf);
+            var least = (ra + rb - Vector256.Abs(Dot(t, x, y, z))) / Vector256.Sqrt(len2);
+            return Vector256.ConditionalSelect(Vector256.GreaterThan(len2, Vector256<double>.Zero), least, Vector256.Create(double.PositiveInfinity));
         }
 
         /// <summary>Per lane, u · (x, y, z) in <see cref="Vector3D.Dot"/>'s order.</summary>
@@ -148,17 +134,17 @@ namespace ProximityLib.Double
         private static Vector256<double> Dot(Vector3D u, Vector256<double> x, Vector256<double> y, Vector256<double> z) =>
             Vector256.Create(u.X) * x + Vector256.Create(u.Y) * y + Vector256.Create(u.Z) * z;
 
-        /// <summary><see cref="Overlaps"/> on <see cref="EdgeCross"/>(u, c_j) for the columns c_j in the lanes.</summary>
+        /// <summary><see cref="Overlap"/> on <see cref="EdgeCross"/>(u, c_j) for the columns c_j in the lanes (lane 3: u × ±u = 0, no axis).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void CrossOverlaps(in Box a, in Box b, Vector3D ha, Vector3D hb, Vector3D t, Vector3D u,
-            Vector256<double> cx, Vector256<double> cy, Vector256<double> cz, out Vector256<double> down, out Vector256<double> up)
+        private static Vector256<double> CrossOverlap(in Box a, in Box b, Vector3D ha, Vector3D hb, Vector3D t, Vector3D u,
+            Vector256<double> cx, Vector256<double> cy, Vector256<double> cz)
         {
             Vector256<double> ux = Vector256.Create(u.X), uy = Vector256.Create(u.Y), uz = Vector256.Create(u.Z);
             var same = Vector256.GreaterThanOrEqual(ux * cx + uy * cy + uz * cz, Vector256<double>.Zero);
             var wx = Vector256.ConditionalSelect(same, cx - ux, cx + ux);
             var wy = Vector256.ConditionalSelect(same, cy - uy, cy + uy);
             var wz = Vector256.ConditionalSelect(same, cz - uz, cz + uz);
-            Overlaps(a, b, ha, hb, t, uy * wz - uz * wy, uz * wx - ux * wz, ux * wy - uy * wx, out down, out up);
+            return Overlap(a, b, ha, hb, t, uy * wz - uz * wy, uz * wx - ux * wz, ux * wy - uy * wx);
         }
 
         /// <summary>
