@@ -1,4 +1,5 @@
 #if NET
+using System;
 using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
 using System.Runtime.Intrinsics.X86;
@@ -65,6 +66,154 @@ namespace ProximityLib.Double
                 | EdgeAxesSeparate(tx, ty, hax, hay, r0, r1, hbNext, hbPrev);        // e_z × b_j
             return edges.ExtractMostSignificantBits() == 0;
         }
+
+        /// <summary>
+        /// <see cref="Penetration"/> on AVX2 lanes: A's and B's face normals in one group (A's and B's z in a second), and
+        /// a_i × b_j for the three j of each i in one group each (lane 3 is u × ±u = 0 exactly, so not an axis). Every
+        /// lane makes the operations of <see cref="TryAxis"/> on its axis and keeps the smaller of its two overlaps; the
+        /// first axis holding the least (in the scalar form's order) is then tried alone by <see cref="TryAxis"/>, so both
+        /// forms return the same bits.
+        /// </summary>
+        internal static double PenetrationVector(in Box a, in Box b, Vector3D t, out Vector3D push)
+        {
+            Vector3D ax = a.X, ay = a.Y, az = a.Z, bx = b.X, by = b.Y, bz = b.Z, ha = a.Half, hb = b.Half;
+            var g0 = Overlap(a, b, ha, hb, t, Vector256.Create(ax.X, ay.X, bx.X, by.X), Vector256.Create(ax.Y, ay.Y, bx.Y, by.Y),
+                Vector256.Create(ax.Z, ay.Z, bx.Z, by.Z));
+            var inf = Vector256.Create(double.PositiveInfinity);
+            Vector256<double> g1 = inf, g2 = inf, g3 = inf, g4 = inf;
+            if (!(a.Planar || b.Planar))
+            {
+                g1 = Overlap(a, b, ha, hb, t, Vector256.Create(az.X, bz.X, 0, 0), Vector256.Create(az.Y, bz.Y, 0, 0), Vector256.Create(az.Z, bz.Z, 0, 0));
+                // B's axes as columns: lane j holds b_j.
+                Vector256<double> cx = Vector256.Create(bx.X, by.X, bz.X, 0), cy = Vector256.Create(bx.Y, by.Y, bz.Y, 0), cz = Vector256.Create(bx.Z, by.Z, bz.Z, 0);
+                g2 = CrossOverlap(a, b, ha, hb, t, ax, cx, cy, cz);
+                g3 = CrossOverlap(a, b, ha, hb, t, ay, cx, cy, cz);
+                g4 = CrossOverlap(a, b, ha, hb, t, az, cx, cy, cz);
+            }
+            var m = Vector256.Min(Vector256.Min(Vector256.Min(g0, g1), Vector256.Min(g2, g3)), g4);
+            m = Vector256.Min(m, Avx.Permute(m, 0b0101));
+            m = Vector256.Min(m, Avx.Permute2x128(m, m, 1));
+            // The first axis (in the scalar order) holding the least value, tried alone by the scalar form.
+            ulong hits = Vector256.Equals(g0, m).ExtractMostSignificantBits() | (Vector256.Equals(g1, m).ExtractMostSignificantBits() << 4)
+                | (Vector256.Equals(g2, m).ExtractMostSignificantBits() << 8) | (Vector256.Equals(g3, m).ExtractMostSignificantBits() << 12)
+                | ((ulong)Vector256.Equals(g4, m).ExtractMostSignificantBits() << 16);
+            double best = double.PositiveInfinity, scale = 0;
+            Vector3D axis = default;
+            if (hits != 0)
+            {
+                int bit = System.Numerics.BitOperations.TrailingZeroCount(hits), group = bit >> 2, lane = bit & 3;
+                var v = group == 0 ? (lane == 0 ? ax : lane == 1 ? ay : lane == 2 ? bx : by)
+                    : group == 1 ? (lane == 0 ? az : bz)
+                    : EdgeCross(group == 2 ? ax : group == 3 ? ay : az, lane == 0 ? bx : lane == 1 ? by : bz);
+                TryAxis(v, ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+            }
+            push = axis * scale;
+            return best;
+        }
+
+        /// <summary>
+        /// Per lane, the smaller of <see cref="TryAxis"/>'s down and up for the axis (x, y, z), +∞ where it is no axis:
+        /// (ra + rb − |sep|)/len is exactly the one of (ra + rb ∓ sep)/len with the sign of sep, one division for both.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static Vector256<double> Overlap(in Box a, in Box b, Vector3D ha, Vector3D hb, Vector3D t, Vector256<double> x, Vector256<double> y, Vector256<double> z)
+        {
+            var len2 = x * x + y * y + z * z;
+            var ra = Vector256.Create(ha.X) * Vector256.Abs(Dot(a.X, x, y, z)) + Vector256.Create(ha.Y) * Vector256.Abs(Dot(a.Y, x, y, z))
+                + Vector256.Create(ha.Z) * Vector256.Abs(Dot(a.Z, x, y, z));
+            var rb = Vector256.Create(hb.X) * Vector256.Abs(Dot(b.X, x, y, z)) + Vector256.Create(hb.Y) * Vector256.Abs(Dot(b.Y, x, y, z))
+                + Vector256.Create(hb.Z) * Vector256.Abs(Dot(b.Z, x, y, z));
+            var least = (ra + rb - Vector256.Abs(Dot(t, x, y, z))) / Vector256.Sqrt(len2);
+            return Vector256.ConditionalSelect(Vector256.GreaterThan(len2, Vector256<double>.Zero), least, Vector256.Create(double.PositiveInfinity));
+        }
+
+        /// <summary>Per lane, u · (x, y, z) in <see cref="Vector3D.Dot"/>'s order.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector256<double> Dot(Vector3D u, Vector256<double> x, Vector256<double> y, Vector256<double> z) =>
+            Vector256.Create(u.X) * x + Vector256.Create(u.Y) * y + Vector256.Create(u.Z) * z;
+
+        /// <summary><see cref="Overlap"/> on <see cref="EdgeCross"/>(u, c_j) for the columns c_j in the lanes (lane 3: u × ±u = 0, no axis).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector256<double> CrossOverlap(in Box a, in Box b, Vector3D ha, Vector3D hb, Vector3D t, Vector3D u,
+            Vector256<double> cx, Vector256<double> cy, Vector256<double> cz)
+        {
+            Vector256<double> ux = Vector256.Create(u.X), uy = Vector256.Create(u.Y), uz = Vector256.Create(u.Z);
+            var same = Vector256.GreaterThanOrEqual(ux * cx + uy * cy + uz * cz, Vector256<double>.Zero);
+            var wx = Vector256.ConditionalSelect(same, cx - ux, cx + ux);
+            var wy = Vector256.ConditionalSelect(same, cy - uy, cy + uy);
+            var wz = Vector256.ConditionalSelect(same, cz - uz, cz + uz);
+            return Overlap(a, b, ha, hb, t, uy * wz - uz * wy, uz * wx - ux * wz, ux * wy - uy * wx);
+        }
+
+        /// <summary>
+        /// <see cref="VerticesScalar"/> on AVX2 lanes, four corners per vector. A lane's corner is the scalar form's sums
+        /// with zeros added where it adds nothing (which can only change the sign of a zero coordinate, and the squared
+        /// gap not at all), so both forms return the same bits and the same corner.
+        /// </summary>
+        internal static double VerticesVector(Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
+            Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA, bool planar, out int win, out uint edges)
+        {
+            // Corners 0–3 per coordinate; corners 4–7 add dz to them. r: A's clamp residuals.
+            Vector256<double> ax = Corners4(pa.X, dx.X, dy.X), ay = Corners4(pa.Y, dx.Y, dy.Y), az = Corners4(pa.Z, dx.Z, dy.Z);
+            Vector256<double> bx = Corners4(pb.X, ex.X, ey.X), by = Corners4(pb.Y, ex.Y, ey.Y), bz = Corners4(pb.Z, ex.Z, ey.Z);
+            Vector256<double> rx0 = Outside(ax, loB.X, hiB.X), ry0 = Outside(ay, loB.Y, hiB.Y), rz0 = Outside(az, loB.Z, hiB.Z);
+            var a0 = rx0 * rx0 + ry0 * ry0 + rz0 * rz0;
+            var b0 = Gaps(bx, by, bz, loA, hiA);
+            var inf = Vector256.Create(double.PositiveInfinity);
+            Vector256<double> a1 = inf, b1 = inf;
+            edges = 0;
+            if (!planar)
+            {
+                Vector256<double> rx1 = Outside(ax + Vector256.Create(dz.X), loB.X, hiB.X), ry1 = Outside(ay + Vector256.Create(dz.Y), loB.Y, hiB.Y),
+                    rz1 = Outside(az + Vector256.Create(dz.Z), loB.Z, hiB.Z);
+                a1 = rx1 * rx1 + ry1 * ry1 + rz1 * rz1;
+                b1 = Gaps(bx + Vector256.Create(ez.X), by + Vector256.Create(ez.Y), bz + Vector256.Create(ez.Z), loA, hiA);
+                // Slopes dir·r at all eight corners per axis: the edge from c descends if < 0 there and > 0 at c + 2^i.
+                edges = Descending(dx, rx0, ry0, rz0, rx1, ry1, rz1, 1) & 0x55
+                    | (Descending(dy, rx0, ry0, rz0, rx1, ry1, rz1, 2) & 0x33) << 8
+                    | (Descending(dz, rx0, ry0, rz0, rx1, ry1, rz1, 4) & 0x0F) << 16;
+            }
+            var m = Vector256.Min(Vector256.Min(a0, a1), Vector256.Min(b0, b1));
+            m = Vector256.Min(m, Avx.Permute(m, 0b0101));
+            m = Vector256.Min(m, Avx.Permute2x128(m, m, 1));
+            // The first corner holding the least gap, in the scalar order (A's 0–7, then B's 0–7).
+            uint hits = Vector256.Equals(a0, m).ExtractMostSignificantBits() | (Vector256.Equals(a1, m).ExtractMostSignificantBits() << 4)
+                | (Vector256.Equals(b0, m).ExtractMostSignificantBits() << 8) | (Vector256.Equals(b1, m).ExtractMostSignificantBits() << 12);
+            win = hits == 0 ? 0 : System.Numerics.BitOperations.TrailingZeroCount(hits);
+            return hits == 0 ? double.PositiveInfinity : m.ToScalar();
+        }
+
+        /// <summary>Bit c: the slope dir·r is negative at corner c and positive at corner c + step (residuals of corners 0–3, 4–7).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static uint Descending(Vector3D dir, Vector256<double> rx0, Vector256<double> ry0, Vector256<double> rz0,
+            Vector256<double> rx1, Vector256<double> ry1, Vector256<double> rz1, int step)
+        {
+            Vector256<double> x = Vector256.Create(dir.X), y = Vector256.Create(dir.Y), z = Vector256.Create(dir.Z);
+            var s0 = x * rx0 + y * ry0 + z * rz0;
+            var s1 = x * rx1 + y * ry1 + z * rz1;
+            uint neg = Vector256.LessThan(s0, Vector256<double>.Zero).ExtractMostSignificantBits() | (Vector256.LessThan(s1, Vector256<double>.Zero).ExtractMostSignificantBits() << 4);
+            uint pos = Vector256.GreaterThan(s0, Vector256<double>.Zero).ExtractMostSignificantBits() | (Vector256.GreaterThan(s1, Vector256<double>.Zero).ExtractMostSignificantBits() << 4);
+            return neg & (pos >> step);
+        }
+
+        /// <summary>(p, p + dx, p + dy, (p + dx) + dy): one coordinate of corners 0–3.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector256<double> Corners4(double p, double dx, double dy) =>
+            Vector256.Create(p) + Vector256.Create(0, dx, 0, dx) + Vector256.Create(0, 0, dy, dy);
+
+        /// <summary>Per lane, the squared gap of the point (x, y, z) to the box [lo, hi], as the squared length of <see cref="Residual(Vector3D, Vector3D, Vector3D)"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector256<double> Gaps(Vector256<double> x, Vector256<double> y, Vector256<double> z, Vector3D lo, Vector3D hi)
+        {
+            var rx = Outside(x, lo.X, hi.X);
+            var ry = Outside(y, lo.Y, hi.Y);
+            var rz = Outside(z, lo.Z, hi.Z);
+            return rx * rx + ry * ry + rz * rz;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector256<double> Outside(Vector256<double> e, double lo, double hi) =>
+            Vector256.Min(e - Vector256.Create(lo), Vector256<double>.Zero) + Vector256.Max(e - Vector256.Create(hi), Vector256<double>.Zero);
 
         /// <summary>Lane i of v in every lane.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -10,51 +10,36 @@ namespace ProximityLib.Double
         /// Separating-axis candidates (face normals of both, and in 3D the nine edge×edge directions; Gottschalk,
         /// Lin &amp; Manocha 1996) contain the exact minimum-translation direction of two polytopes. Each candidate is
         /// normalised and both boxes are projected on it honestly (no orthonormality shortcuts), so a noisy,
-        /// near-degenerate cross axis can only overestimate the overlap and never wins wrongly. Apart: the closest pair
-        /// always involves an edge of A or of B (a face–face contact region is bounded by edges), so the minimum of
-        /// the edge–box distances is exact; an edge whose gap along the other box's axes already exceeds the best pair
-        /// cannot win and is skipped. Overlapping: A moved by the minimum translation just touches B, and the
-        /// touching pair found the same way, moved back, realises the penetration.
+        /// near-degenerate cross axis can only overestimate the overlap and never wins wrongly. Apart: the best of the
+        /// vertex–box and edge–box closed forms that can hold the closest pair (<see cref="BoxesApart"/>). Overlapping:
+        /// A moved by the minimum translation just touches B, and a pair of the touching configuration found the same
+        /// way, moved back, realises the penetration.
         /// </summary>
-        public static DistanceResult3 BoxBox(in Box boxA, in Box boxB, out bool inRange)
+        public static DistanceResult3 BoxBox(in Box a, in Box b, out bool inRange)
         {
-            inRange = Range.Box(Size(boxA, boxB));
-            var shift = boxA.Origin;
-            var a = boxA.Translated(-shift);
-            var b = boxB.Translated(-shift);
+            double size = Size(a, b);
+            inRange = Range.Box(size);
+            // Relative to A's origin: B's origin there is the same difference the overlap test forms, so the verdict is
+            // the overlap query's own (the two agree).
+            var shift = a.Origin;
+            var d = b.Origin - shift;
             Vector3D onA, onB;
-            // Apart (by the overlap query's own verdict, so the two agree): the depth search below has nothing to add.
+            // Apart: the depth search below has nothing to add.
             if (!BoxBoxOverlaps(a, b))
             {
-                double gap = EdgesApart(a, b, out onA, out onB);
+                double gap = BoxesApart(a, default, b, d, 0, out onA, out onB);
                 // A subnormal squared gap has lost bits: the slow path answers it at a scale where it has not.
                 inRange &= gap == 0 || Range.In(gap);
                 return new DistanceResult3(Math.Sqrt(gap), gap, onA + shift, onB + shift, 0, 0);
             }
-            var ca = a.Origin + a.ToWorldOffset(a.LocalCenter);
-            var cb = b.Origin + b.ToWorldOffset(b.LocalCenter);
-            var ha = a.Half;
-            var hb = b.Half;
-            bool planar = a.Planar || b.Planar;
-            int faces = planar ? 2 : 3;
-
-            double depth = double.PositiveInfinity;
-            Vector3D push = default;
-            for (int i = 0; i < faces; i++)
-            {
-                TryBoxAxis(a.Axis(i), a, b, ca, cb, ha, hb, ref depth, ref push);
-                TryBoxAxis(b.Axis(i), a, b, ca, cb, ha, hb, ref depth, ref push);
-            }
-            if (!planar)
-            {
-                for (int i = 0; i < 3; i++)
-                    for (int j = 0; j < 3; j++)
-                        TryBoxAxis(EdgeCross(a.Axis(i), b.Axis(j)), a, b, ca, cb, ha, hb, ref depth, ref push);
-            }
-
+            var ca = a.ToWorldOffset(a.LocalCenter);
+            var cb = d + b.ToWorldOffset(b.LocalCenter);
+            double depth = Penetration(a, b, cb - ca, out var push);
+            // A moved by the push just touches B: its squared gap there is rounding, and any pair within 2^-50·S of
+            // touching realises the depth as well as the nearest one (apart by rounding, the gap must be the least).
             if (depth < 0) push = default;
-            var moved = a.Translated(push);
-            double g = EdgesApart(moved, b, out onA, out onB);
+            double touch = size * (1.0 / (1L << 50)), enough = depth < 0 ? 0 : touch * touch;
+            double g = BoxesApart(a, push, b, d, enough, out onA, out onB);
             onA = onA - push + shift;
             onB += shift;
             if (depth < 0)
@@ -65,18 +50,66 @@ namespace ProximityLib.Double
             return new DistanceResult3(-depth, 0, onA, onB, 0, 0);
         }
 
-        private static void TryBoxAxis(Vector3D axis, in Box a, in Box b, Vector3D ca, Vector3D cb, Vector3D ha, Vector3D hb, ref double best, ref Vector3D push)
+        /// <summary>
+        /// The least translation of A that clears B (returned as <paramref name="push"/>, its length returned) over the
+        /// face normals and, in 3D, the edge × edge directions; negative when some axis separates (the push is then unused).
+        /// Each axis's projections are formed on the axis as it is and divided by its length once (instead of normalising
+        /// the axis with three divisions); on AVX2, four axes at a time (BoxKernels.Vector.cs).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Penetration(in Box a, in Box b, Vector3D t, out Vector3D push)
         {
-            double len2 = axis.LengthSquared;
+#if NET
+            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported) return PenetrationVector(a, b, t, out push);
+#endif
+            return PenetrationScalar(a, b, t, out push);
+        }
+
+        /// <summary>The scalar form of <see cref="Penetration"/>: the only one on netstandard2.1 (Unity) and without AVX2.</summary>
+        internal static double PenetrationScalar(in Box a, in Box b, Vector3D t, out Vector3D push)
+        {
+            Vector3D ax = a.X, ay = a.Y, az = a.Z, bx = b.X, by = b.Y, bz = b.Z, ha = a.Half, hb = b.Half;
+            double best = double.PositiveInfinity, scale = 0;
+            Vector3D axis = default;
+            TryAxis(ax, ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+            TryAxis(ay, ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+            TryAxis(bx, ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+            TryAxis(by, ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+            if (!(a.Planar || b.Planar))
+            {
+                TryAxis(az, ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+                TryAxis(bz, ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+                TryAxis(EdgeCross(ax, bx), ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+                TryAxis(EdgeCross(ax, by), ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+                TryAxis(EdgeCross(ax, bz), ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+                TryAxis(EdgeCross(ay, bx), ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+                TryAxis(EdgeCross(ay, by), ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+                TryAxis(EdgeCross(ay, bz), ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+                TryAxis(EdgeCross(az, bx), ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+                TryAxis(EdgeCross(az, by), ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+                TryAxis(EdgeCross(az, bz), ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+            }
+            push = axis * scale;
+            return best;
+        }
+
+        /// <summary>
+        /// Both boxes projected on axis v with their actual axes (half-widths ra, rb; B's centre at sep from A's), over
+        /// |v|: moving A by −v·down/|v|² or +v·up/|v|² clears B. A negative overlap proves separation and is kept too.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void TryAxis(Vector3D v, Vector3D ax, Vector3D ay, Vector3D az, Vector3D bx, Vector3D by, Vector3D bz,
+            Vector3D ha, Vector3D hb, Vector3D t, ref double best, ref Vector3D axis, ref double scale)
+        {
+            double len2 = v.LengthSquared;
             if (!(len2 > 0)) return;
-            var n = axis / Math.Sqrt(len2);
-            double ra = Radius(a, ha, n), rb = Radius(b, hb, n);
-            double sep = Vector3D.Dot(cb - ca, n);
-            double down = ra + rb - sep;  // moving A by −n·down clears B
-            double up = ra + rb + sep;    // moving A by +n·up clears B
-            // A negative overlap proves separation; record it so the caller knows (the push is then unused).
-            if (down < best) { best = down; push = -n * down; }
-            if (up < best) { best = up; push = n * up; }
+            double len = Math.Sqrt(len2);
+            double ra = ha.X * Math.Abs(Vector3D.Dot(ax, v)) + ha.Y * Math.Abs(Vector3D.Dot(ay, v)) + ha.Z * Math.Abs(Vector3D.Dot(az, v));
+            double rb = hb.X * Math.Abs(Vector3D.Dot(bx, v)) + hb.Y * Math.Abs(Vector3D.Dot(by, v)) + hb.Z * Math.Abs(Vector3D.Dot(bz, v));
+            double sep = Vector3D.Dot(t, v);
+            double down = (ra + rb - sep) / len, up = (ra + rb + sep) / len;
+            if (down < best) { best = down; axis = v; scale = -down / len; }
+            if (up < best) { best = up; axis = v; scale = up / len; }
         }
 
         /// <summary>
@@ -88,67 +121,173 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static Vector3D EdgeCross(Vector3D u, Vector3D v) => Vector3D.Cross(u, Vector3D.Dot(u, v) >= 0 ? v - u : v + u);
 
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double Radius(in Box box, Vector3D h, Vector3D n) =>
-            h.X * Math.Abs(Vector3D.Dot(box.X, n)) + h.Y * Math.Abs(Vector3D.Dot(box.Y, n)) + h.Z * Math.Abs(Vector3D.Dot(box.Z, n));
-
-        /// <summary>Squared distance between two boxes known to be apart or touching, as the best edge–box pair.</summary>
-        private static double EdgesApart(in Box a, in Box b, out Vector3D onA, out Vector3D onB)
+        /// <summary>
+        /// Squared distance between two boxes known to be apart or touching (placed at <paramref name="originA"/> and
+        /// <paramref name="originB"/>), and a pair of points realising it. The closest pair of two disjoint convex polytopes
+        /// can always be taken with a point on an edge of A or a vertex of B: where A's point lies inside a face, the
+        /// contact face of B beyond it lies inside that face too (else it would cross the face's boundary), and it has a
+        /// vertex. So the minimum over A's edges against box B and B's vertices against box A is exact; in 2D a vertex of
+        /// either suffices. Each vertex is one clamp in the other box's frame. The distance along an edge is convex, so an
+        /// edge beats its own ends only if it descends from both, which the ends' clamp residuals tell: only such edges
+        /// are minimised (the closed form of <see cref="SegmentBoxLocal"/>), and only while a lower bound on their
+        /// distance (their squared gaps along B's axes, summed: no point of the edge is nearer on any axis) does not
+        /// exceed the best pair (with a margin, so rounding never hides a win). The search also stops once the best
+        /// squared gap is at most <paramref name="enough"/>.
+        /// </summary>
+        private static double BoxesApart(in Box a, Vector3D originA, in Box b, Vector3D originB, double enough, out Vector3D onA, out Vector3D onB)
         {
-            double best = double.PositiveInfinity;
-            onA = default; onB = default;
-            EdgesAgainst(a, b, false, ref best, ref onA, ref onB);
-            EdgesAgainst(b, a, true, ref best, ref onA, ref onB);
+            bool planar = a.Planar || b.Planar;
+            // Rows: A's axes in B's frame (a_i · b_j); the columns are B's axes in A's frame (the same products).
+            var ax = b.ToLocal(a.X);
+            var ay = b.ToLocal(a.Y);
+            var az = b.ToLocal(a.Z);
+            var bx = new Vector3D(ax.X, ay.X, az.X);
+            var by = new Vector3D(ax.Y, ay.Y, az.Y);
+            var bz = new Vector3D(ax.Z, ay.Z, az.Z);
+            var d = originB - originA;
+            Vector3D loA = a.Lo, hiA = a.Hi, loB = b.Lo, hiB = b.Hi;
+            var ea = hiA - loA;
+            var eb = hiB - loB;
+            // A's corners in B's frame and B's in A's (bit i of the index picks Hi on axis i), and A's edge vectors.
+            var dx = ax * ea.X;
+            var dy = ay * ea.Y;
+            var dz = az * ea.Z;
+            var pa = b.ToLocal(-d) + ax * loA.X + ay * loA.Y + az * loA.Z;
+            var ex = bx * eb.X;
+            var ey = by * eb.Y;
+            var ez = bz * eb.Z;
+            var pb = a.ToLocal(d) + bx * loB.X + by * loB.Y + bz * loB.Z;
+
+            // Every vertex against the other box, and the edges of A to minimise (bit 8i + c: the edge from corner c along
+            // axis i). win: 0–7 A's corner, 8–15 B's corner, 16 + 8i + c that edge.
+            double best = Vertices(pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA, planar, out int win, out uint edges);
+            double winT = 0;
+            // Those whose lower bound does not exceed the best pair, until the best is good enough.
+            for (int bit = 0; edges >> bit != 0 && best > enough; bit++)
+            {
+                if (((edges >> bit) & 1) == 0) continue;
+                int i = bit >> 3, from = bit & 7;
+                var dir = i == 0 ? dx : (i == 1 ? dy : dz);
+                var p = Corner(pa, dx, dy, dz, from);
+                if (SpanGap2(p, Corner(pa, dx, dy, dz, from | (1 << i)), loB, hiB) > best * (1 + 1e-9)) continue;
+                double g = SegmentBoxLocal(p, dir, loB, hiB, out double t);
+                if (g < best) { best = g; win = 16 + bit; winT = t; }
+            }
+
+            // The winning pair in world coordinates, from its box-local coordinates.
+            if (win < 8)
+            {
+                onA = originA + a.ToWorldOffset(Corner(loA, hiA, win));
+                onB = originB + b.ToWorldOffset(Clamp(Corner(pa, dx, dy, dz, win), loB, hiB));
+            }
+            else if (win < 16)
+            {
+                onB = originB + b.ToWorldOffset(Corner(loB, hiB, win - 8));
+                onA = originA + a.ToWorldOffset(Clamp(Corner(pb, ex, ey, ez, win - 8), loA, hiA));
+            }
+            else
+            {
+                int i = (win - 16) >> 3, from = (win - 16) & 7;
+                var dir = i == 0 ? dx : (i == 1 ? dy : dz);
+                var local = Corner(loA, hiA, from);
+                double lo = Vec.Get(loA, i), hi = Vec.Get(hiA, i), x = winT <= 0.5 ? lo + (hi - lo) * winT : hi - (hi - lo) * (1 - winT);
+                local = new Vector3D(i == 0 ? x : local.X, i == 1 ? x : local.Y, i == 2 ? x : local.Z);
+                onA = originA + a.ToWorldOffset(local);
+                onB = originB + b.ToWorldOffset(Clamp(Corner(pa, dx, dy, dz, from) + dir * winT, loB, hiB));
+            }
             return best;
         }
 
-        private static void EdgesAgainst(in Box edges, in Box other, bool swapped, ref double best, ref Vector3D onA, ref Vector3D onB)
+        /// <summary>
+        /// The least squared gap of A's corners (pa + sums of dx, dy, dz; B's frame) to B's box [loB, hiB] and of B's
+        /// corners to A's box, and which corner (0–7 A's, 8–15 B's, the first of equal ones); 4 of each when planar (the
+        /// z bit picks the same corner). In 3D also A's edges that descend from both ends (bit 8i + c: the edge from
+        /// corner c along axis i, whose slope dir·r is &lt; 0 at c and &gt; 0 at its other end, r the clamp residual): the
+        /// distance along an edge is convex, so only these can beat their ends.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Vertices(Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
+            Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA, bool planar, out int win, out uint edges)
         {
-            var lo = edges.Lo;
-            var hi = edges.Hi;
-            bool point = lo == hi;
-            var center = other.Origin + other.ToWorldOffset(other.LocalCenter);
-            var half = other.Half;
-            // The eight corners once (bit i of the index picks Hi on axis i); each edge joins two of them.
-            Span<Vector3D> corner = stackalloc Vector3D[8];
-            for (int c = 0; c < 8; c++)
-                corner[c] = edges.Origin + edges.ToWorldOffset(new Vector3D((c & 1) != 0 ? hi.X : lo.X, (c & 2) != 0 ? hi.Y : lo.Y, (c & 4) != 0 ? hi.Z : lo.Z));
-            for (int i = 0; i < 3; i++)
-            {
-                // A zero-length edge is a vertex, already an endpoint of another edge (unless the box is a point).
-                if (Vec.Get(lo, i) == Vec.Get(hi, i) && !(point && i == 0)) continue;
-                int j = (i + 1) % 3, k = (i + 2) % 3;
-                int nj = Vec.Get(lo, j) == Vec.Get(hi, j) ? 1 : 2, nk = Vec.Get(lo, k) == Vec.Get(hi, k) ? 1 : 2;
-                for (int sj = 0; sj < nj; sj++)
-                {
-                    for (int sk = 0; sk < nk; sk++)
-                    {
-                        int from = (sj << j) | (sk << k);
-                        var p = corner[from];
-                        var q = corner[from | (1 << i)];
-                        // The gap along any of the other box's axes bounds the edge's distance from below: an edge
-                        // that cannot beat the best pair so far is skipped (with a margin, so rounding never hides a win).
-                        double lb = Math.Max(SlabGap(p, q, center, other.X, half.X),
-                            Math.Max(SlabGap(p, q, center, other.Y, half.Y), SlabGap(p, q, center, other.Z, half.Z)));
-                        if (lb * lb > best * (1 + 1e-9)) continue;
-                        double g = SegmentBoxSeparated(p, q, other, out _, out var onEdge, out var onOther);
-                        if (g < best)
-                        {
-                            best = g;
-                            if (swapped) { onA = onOther; onB = onEdge; }
-                            else { onA = onEdge; onB = onOther; }
-                        }
-                    }
-                }
-            }
+#if NET
+            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported) return VerticesVector(pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA, planar, out win, out edges);
+#endif
+            return VerticesScalar(pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA, planar, out win, out edges);
         }
 
-        /// <summary>How far segment [p, q] lies outside the slab |(x − center)·axis| ≤ half (axis a unit box axis).</summary>
-        private static double SlabGap(Vector3D p, Vector3D q, Vector3D center, Vector3D axis, double half)
+        /// <summary>The scalar form of <see cref="Vertices"/>: the only one on netstandard2.1 (Unity) and without AVX2.</summary>
+        internal static double VerticesScalar(Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
+            Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA, bool planar, out int win, out uint edges)
         {
-            double sp = Vector3D.Dot(p - center, axis), sq = Vector3D.Dot(q - center, axis);
-            return Math.Max(0, Math.Max(Math.Min(sp, sq) - half, -half - Math.Max(sp, sq)));
+            int n = planar ? 4 : 8;
+            double best = double.PositiveInfinity;
+            win = 0;
+            for (int c = 0; c < n; c++)
+            {
+                double g = Residual(Corner(pa, dx, dy, dz, c), loB, hiB).LengthSquared;
+                if (g < best) { best = g; win = c; }
+            }
+            for (int c = 0; c < n; c++)
+            {
+                double g = Residual(Corner(pb, ex, ey, ez, c), loA, hiA).LengthSquared;
+                if (g < best) { best = g; win = 8 + c; }
+            }
+            edges = 0;
+            if (planar) return best;
+            for (int i = 0; i < 3; i++)
+            {
+                var dir = i == 0 ? dx : (i == 1 ? dy : dz);
+                for (int c = 0; c < 8; c++)
+                {
+                    if ((c & (1 << i)) != 0) continue;
+                    if (Vector3D.Dot(dir, Residual(Corner(pa, dx, dy, dz, c), loB, hiB)) < 0
+                        && Vector3D.Dot(dir, Residual(Corner(pa, dx, dy, dz, c | (1 << i)), loB, hiB)) > 0)
+                        edges |= 1u << (8 * i + c);
+                }
+            }
+            return best;
         }
+
+        /// <summary>
+        /// Corner c of the box p + [0, 1]·dx + [0, 1]·dy + [0, 1]·dz (bit i of c picks the far end on axis i): the sums in
+        /// one order, so an edge's two ends and a vertex seen twice are the same values.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector3D Corner(Vector3D p, Vector3D dx, Vector3D dy, Vector3D dz, int c)
+        {
+            if ((c & 1) != 0) p += dx;
+            if ((c & 2) != 0) p += dy;
+            if ((c & 4) != 0) p += dz;
+            return p;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector3D Corner(Vector3D lo, Vector3D hi, int c) =>
+            new Vector3D((c & 1) != 0 ? hi.X : lo.X, (c & 2) != 0 ? hi.Y : lo.Y, (c & 4) != 0 ? hi.Z : lo.Z);
+
+        /// <summary>p − clamp(p) against the box [lo, hi] (box-local).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector3D Residual(Vector3D p, Vector3D lo, Vector3D hi) =>
+            new Vector3D(Outside(p.X, lo.X, hi.X), Outside(p.Y, lo.Y, hi.Y), Outside(p.Z, lo.Z, hi.Z));
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector3D Clamp(Vector3D p, Vector3D lo, Vector3D hi) =>
+            new Vector3D(Num.Clamp(p.X, lo.X, hi.X), Num.Clamp(p.Y, lo.Y, hi.Y), Num.Clamp(p.Z, lo.Z, hi.Z));
+
+        /// <summary>
+        /// A lower bound on the squared distance from segment [p, q] to the box [lo, hi] (box-local): every point of the
+        /// segment is at least the segment's gap along each axis outside that axis's slab, so at least their root-sum-square.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double SpanGap2(Vector3D p, Vector3D q, Vector3D lo, Vector3D hi)
+        {
+            double x = AxisSpanGap(p.X, q.X, lo.X, hi.X), y = AxisSpanGap(p.Y, q.Y, lo.Y, hi.Y), z = AxisSpanGap(p.Z, q.Z, lo.Z, hi.Z);
+            return x * x + y * y + z * z;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double AxisSpanGap(double p, double q, double lo, double hi) =>
+            Math.Max(0, Math.Max(Math.Min(p, q) - hi, lo - Math.Max(p, q)));
 
         /// <summary>
         /// The largest magnitude among the boxes' relative position and extents: within [2^-450, 2^450] (or 0) the box
