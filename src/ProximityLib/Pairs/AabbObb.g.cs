@@ -8,7 +8,7 @@ namespace ProximityLib.Double
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between an AABB and an OBB (3D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 15 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; best edge–box pair when apart.</summary>
+        /// <summary>Closest distance between an AABB and an OBB (3D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 15 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; when apart, the closed forms on the features that can hold the closest pair (every vertex against the other box; in 3D the edges that descend from both ends).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Aabb3 a, Obb3 b)
         {
@@ -18,7 +18,7 @@ namespace ProximityLib.Double
         /// <summary>Closest distance between an OBB and an AABB (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Obb3 a, Aabb3 b) => Between(b, a).Swapped();
-        /// <summary>Closest distance between an AABB and an OBB (2D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 4 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; best edge–box pair when apart.</summary>
+        /// <summary>Closest distance between an AABB and an OBB (2D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 4 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; when apart, the closed forms on the features that can hold the closest pair (every vertex against the other box; in 3D the edges that descend from both ends).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Aabb2 a, Obb2 b)
         {

@@ -5,11 +5,11 @@ namespace ProximityLib.Double
     public static partial class ClosestDistance
     {
         // The separating-axis steps work in A's frame: the pair runs in canonical order and the result is swapped back.
-        /// <summary>Closest distance between an OBB and an OBB (3D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 15 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; best edge–box pair when apart.</summary>
+        /// <summary>Closest distance between an OBB and an OBB (3D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 15 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; when apart, the closed forms on the features that can hold the closest pair (every vertex against the other box; in 3D the edges that descend from both ends).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult3 Core(Obb3 a, Obb3 b, out bool inRange) =>
             Order.Swap(a, b) ? Kernels.BoxBox(b.ToBox(), a.ToBox(), out inRange).Swapped() : Kernels.BoxBox(a.ToBox(), b.ToBox(), out inRange);
-        /// <summary>Closest distance between an OBB and an OBB (2D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 4 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; best edge–box pair when apart.</summary>
+        /// <summary>Closest distance between an OBB and an OBB (2D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 4 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; when apart, the closed forms on the features that can hold the closest pair (every vertex against the other box; in 3D the edges that descend from both ends).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult2 Core(Obb2 a, Obb2 b, out bool inRange) =>
             (Order.Swap(a, b) ? Kernels.BoxBox(b.ToBox(), a.ToBox(), out inRange).Swapped() : Kernels.BoxBox(a.ToBox(), b.ToBox(), out inRange)).To2();
