@@ -139,12 +139,7 @@ namespace ProximityApiGen
                 w.Doc(k.Summary!);
                 w.Inline();
                 Guarded(w, $"public static {k.Result} Between({k.A.Double} a, {k.B.Double} b)", "Core", k.Guarded, "Slow(a, b)");
-                if (!k.SameTypes)
-                {
-                    w.Doc($"Closest distance between {k.SwappedPair}: the swapped call, with PointA/PointB and parameters swapped.");
-                    w.Inline();
-                    w.Line($"public static {k.Result} Between({k.B.Double} a, {k.A.Double} b) => Between(b, a).Swapped();");
-                }
+                if (!k.SameTypes) w.Method($"Closest distance between {k.SwappedPair}: the swapped call, with PointA/PointB and parameters swapped.", $"public static {k.Result} Between({k.B.Double} a, {k.A.Double} b) => Between(b, a).Swapped();");
             }
             foreach (var k in between)
             {
@@ -153,12 +148,7 @@ namespace ProximityApiGen
                 w.Inline();
                 if (d == null) w.Line($"public static double Distance({k.A.Double} a, {k.B.Double} b) => Between(a, b).Distance;");
                 else Guarded(w, $"public static double Distance({k.A.Double} a, {k.B.Double} b)", "DistanceCore", d.Guarded, "Slow(a, b).Distance");
-                if (!k.SameTypes)
-                {
-                    w.Doc($"Signed closest distance between {k.SwappedPair}: Distance(b, a).");
-                    w.Inline();
-                    w.Line($"public static double Distance({k.B.Double} a, {k.A.Double} b) => Distance(b, a);");
-                }
+                if (!k.SameTypes) w.Method($"Signed closest distance between {k.SwappedPair}: Distance(b, a).", $"public static double Distance({k.B.Double} a, {k.A.Double} b) => Distance(b, a);");
             }
             w.Line();
             foreach (var k in between.Where(k => k.Guarded))
@@ -175,12 +165,7 @@ namespace ProximityApiGen
                 w.Doc(k.Summary ?? $"Whether {k.Pair} touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.");
                 w.Inline();
                 Guarded(w, $"public static bool Overlaps({k.A.Double} a, {k.B.Double} b)", "Core", k.Guarded, "Slow(a, b)");
-                if (!k.SameTypes)
-                {
-                    w.Doc($"Whether {k.SwappedPair} touch or overlap: Overlaps(b, a).");
-                    w.Inline();
-                    w.Line($"public static bool Overlaps({k.B.Double} a, {k.A.Double} b) => Overlaps(b, a);");
-                }
+                if (!k.SameTypes) w.Method($"Whether {k.SwappedPair} touch or overlap: Overlaps(b, a).", $"public static bool Overlaps({k.B.Double} a, {k.A.Double} b) => Overlaps(b, a);");
             }
             if (overlaps.Any(k => k.Guarded)) w.Line();
             foreach (var k in overlaps.Where(k => k.Guarded))
@@ -198,45 +183,25 @@ namespace ProximityApiGen
             w.Open("public static partial class ClosestDistance");
             foreach (var k in between)
             {
-                w.Doc(FloatSummary(k));
-                w.Inline();
-                w.Line($"public static {k.Result} Between({k.A.Float} a, {k.B.Float} b) => new {k.Result}(Dbl.ClosestDistance.Core({Args(k)}));");
-                if (!k.SameTypes)
-                {
-                    w.Doc($"Closest distance between {k.SwappedPair}: the swapped call, with PointA/PointB and parameters swapped.");
-                    w.Inline();
-                    w.Line($"public static {k.Result} Between({k.B.Float} a, {k.A.Float} b) => Between(b, a).Swapped();");
-                }
+                w.Method(FloatSummary(k), $"public static {k.Result} Between({k.A.Float} a, {k.B.Float} b) => new {k.Result}(Dbl.ClosestDistance.Core({Args(k)}));");
+                if (!k.SameTypes) w.Method($"Closest distance between {k.SwappedPair}: the swapped call, with PointA/PointB and parameters swapped.", $"public static {k.Result} Between({k.B.Float} a, {k.A.Float} b) => Between(b, a).Swapped();");
             }
             foreach (var k in between)
             {
                 var d = distance.FirstOrDefault(x => x.A.Double == k.A.Double && x.B.Double == k.B.Double);
-                w.Doc($"Signed closest distance between {k.Pair}, computed in double, without the witness points: the Distance of <see cref=\"Between({k.A.Float}, {k.B.Float})\"/>, bit for bit.");
-                w.Inline();
-                w.Line(d == null
-                    ? $"public static float Distance({k.A.Float} a, {k.B.Float} b) => Between(a, b).Distance;"
-                    : $"public static float Distance({k.A.Float} a, {k.B.Float} b) => (float)Dbl.ClosestDistance.DistanceCore({Args(k)});");
-                if (!k.SameTypes)
-                {
-                    w.Doc($"Signed closest distance between {k.SwappedPair}: Distance(b, a).");
-                    w.Inline();
-                    w.Line($"public static float Distance({k.B.Float} a, {k.A.Float} b) => Distance(b, a);");
-                }
+                w.Method($"Signed closest distance between {k.Pair}, computed in double, without the witness points: the Distance of <see cref=\"Between({k.A.Float}, {k.B.Float})\"/>, bit for bit.",
+                    d == null
+                        ? $"public static float Distance({k.A.Float} a, {k.B.Float} b) => Between(a, b).Distance;"
+                        : $"public static float Distance({k.A.Float} a, {k.B.Float} b) => (float)Dbl.ClosestDistance.DistanceCore({Args(k)});");
+                if (!k.SameTypes) w.Method($"Signed closest distance between {k.SwappedPair}: Distance(b, a).", $"public static float Distance({k.B.Float} a, {k.A.Float} b) => Distance(b, a);");
             }
             w.Close();
             w.Line();
             w.Open("public static partial class ProximityQuery");
             foreach (var k in overlaps)
             {
-                w.Doc($"Whether {k.Pair} touch or overlap.");
-                w.Inline();
-                w.Line($"public static bool Overlaps({k.A.Float} a, {k.B.Float} b) => Dbl.ProximityQuery.Core({Args(k)});");
-                if (!k.SameTypes)
-                {
-                    w.Doc($"Whether {k.SwappedPair} touch or overlap.");
-                    w.Inline();
-                    w.Line($"public static bool Overlaps({k.B.Float} a, {k.A.Float} b) => Overlaps(b, a);");
-                }
+                w.Method($"Whether {k.Pair} touch or overlap.", $"public static bool Overlaps({k.A.Float} a, {k.B.Float} b) => Dbl.ProximityQuery.Core({Args(k)});");
+                if (!k.SameTypes) w.Method($"Whether {k.SwappedPair} touch or overlap.", $"public static bool Overlaps({k.B.Float} a, {k.A.Float} b) => Overlaps(b, a);");
             }
             w.Close();
             w.Close();
@@ -328,6 +293,9 @@ namespace ProximityApiGen
         public void Close() { _depth--; Line("}"); }
         public void Doc(string summary) => Line($"/// <summary>{summary}</summary>");
         public void Inline() => Line("[MethodImpl(MethodImplOptions.AggressiveInlining)]");
+
+        /// <summary>A documented, inlined one-line method.</summary>
+        public void Method(string summary, string line) { Doc(summary); Inline(); Line(line); }
         public override string ToString() => _text.ToString();
     }
 }

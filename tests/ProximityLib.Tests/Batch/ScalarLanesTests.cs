@@ -79,6 +79,45 @@ namespace ProximityTests.Batch
                 Points = points.ToArray(); Spheres = spheres.ToArray(); Spheres2 = spheres2.ToArray(); Boxes = boxes.ToArray(); Boxes2 = boxes2.ToArray();
                 Obbs = obbs.ToArray(); Obbs2 = obbs2.ToArray(); Segments = segments.ToArray(); Segments2 = segments2.ToArray();
             }
+
+            /// <summary>
+            /// Every batch query, paired and one against many (the first shape being shape j), on the first n shapes of
+            /// each set: <paramref name="values"/> for the distances, <paramref name="verdicts"/> for the overlaps.
+            /// </summary>
+            public void EachQuery(int n, int j, Action<string, Action<float[]>> values, Action<string, Action<bool[]>> verdicts)
+            {
+                var points = new PointSet(Points.AsSpan(0, n));
+                var spheres = new SphereSet(Spheres.AsSpan(0, n));
+                var spheres2 = new SphereSet(Spheres2.AsSpan(0, n));
+                var boxes = new AabbSet(Boxes.AsSpan(0, n));
+                var boxes2 = new AabbSet(Boxes2.AsSpan(0, n));
+                var obbs = new ObbSet(Obbs.AsSpan(0, n));
+                var obbs2 = new ObbSet(Obbs2.AsSpan(0, n));
+                var segments = new SegmentSet(Segments.AsSpan(0, n));
+                var segments2 = new SegmentSet(Segments2.AsSpan(0, n));
+                values("sphere–sphere", x => BatchQuery.Distances(spheres, spheres2, x));
+                values("sphere–sphere one", x => BatchQuery.Distances(Spheres[j], spheres2, x));
+                verdicts("sphere–sphere", x => BatchQuery.Overlaps(spheres, spheres2, x));
+                verdicts("sphere–sphere one", x => BatchQuery.Overlaps(Spheres[j], spheres2, x));
+                values("point–AABB", x => BatchQuery.Distances(points, boxes, x));
+                values("point–AABB one", x => BatchQuery.Distances(Points[j], boxes, x));
+                verdicts("point–AABB", x => BatchQuery.Overlaps(points, boxes, x));
+                verdicts("point–AABB one", x => BatchQuery.Overlaps(Points[j], boxes, x));
+                values("sphere–AABB", x => BatchQuery.Distances(spheres, boxes2, x));
+                values("sphere–AABB one", x => BatchQuery.Distances(Spheres[j], boxes2, x));
+                verdicts("sphere–AABB", x => BatchQuery.Overlaps(spheres, boxes2, x));
+                verdicts("sphere–AABB one", x => BatchQuery.Overlaps(Spheres[j], boxes2, x));
+                verdicts("AABB–AABB", x => BatchQuery.Overlaps(boxes, boxes2, x));
+                verdicts("AABB–AABB one", x => BatchQuery.Overlaps(Boxes[j], boxes2, x));
+                values("sphere–OBB", x => BatchQuery.Distances(spheres, obbs, x));
+                values("sphere–OBB one", x => BatchQuery.Distances(Spheres[j], obbs, x));
+                verdicts("sphere–OBB", x => BatchQuery.Overlaps(spheres, obbs, x));
+                verdicts("sphere–OBB one", x => BatchQuery.Overlaps(Spheres[j], obbs, x));
+                values("segment–segment", x => BatchQuery.Distances(segments, segments2, x));
+                values("segment–segment one", x => BatchQuery.Distances(Segments[j], segments2, x));
+                verdicts("OBB–OBB", x => BatchQuery.Overlaps(obbs, obbs2, x));
+                verdicts("OBB–OBB one", x => BatchQuery.Overlaps(Obbs[j], obbs2, x));
+            }
         }
 
         private static T[] Run<T>(bool vectorized, int n, Action<T[]> query)
@@ -112,42 +151,9 @@ namespace ProximityTests.Batch
         public void ScalarLanesGiveTheVectorLanesResults(int n, int seed)
         {
             var s = new Sets(n, seed);
-            var points = new PointSet(s.Points);
-            var spheres = new SphereSet(s.Spheres);
-            var spheres2 = new SphereSet(s.Spheres2);
-            var boxes = new AabbSet(s.Boxes);
-            var boxes2 = new AabbSet(s.Boxes2);
-            var obbs = new ObbSet(s.Obbs);
-            var obbs2 = new ObbSet(s.Obbs2);
-            var segments = new SegmentSet(s.Segments);
-            var segments2 = new SegmentSet(s.Segments2);
+            // One-against-many with a few different first shapes.
             for (int k = 0; k < 3; k++)
-            {
-                // One-against-many with a few different first shapes.
-                int j = k * n / 3;
-                SameBits("sphere–sphere", n, x => BatchQuery.Distances(spheres, spheres2, x));
-                SameBits("sphere–sphere one", n, x => BatchQuery.Distances(s.Spheres[j], spheres2, x));
-                SameVerdicts("sphere–sphere", n, x => BatchQuery.Overlaps(spheres, spheres2, x));
-                SameVerdicts("sphere–sphere one", n, x => BatchQuery.Overlaps(s.Spheres[j], spheres2, x));
-                SameBits("point–AABB", n, x => BatchQuery.Distances(points, boxes, x));
-                SameBits("point–AABB one", n, x => BatchQuery.Distances(s.Points[j], boxes, x));
-                SameVerdicts("point–AABB", n, x => BatchQuery.Overlaps(points, boxes, x));
-                SameVerdicts("point–AABB one", n, x => BatchQuery.Overlaps(s.Points[j], boxes, x));
-                SameBits("sphere–AABB", n, x => BatchQuery.Distances(spheres, boxes2, x));
-                SameBits("sphere–AABB one", n, x => BatchQuery.Distances(s.Spheres[j], boxes2, x));
-                SameVerdicts("sphere–AABB", n, x => BatchQuery.Overlaps(spheres, boxes2, x));
-                SameVerdicts("sphere–AABB one", n, x => BatchQuery.Overlaps(s.Spheres[j], boxes2, x));
-                SameVerdicts("AABB–AABB", n, x => BatchQuery.Overlaps(boxes, boxes2, x));
-                SameVerdicts("AABB–AABB one", n, x => BatchQuery.Overlaps(s.Boxes[j], boxes2, x));
-                SameBits("sphere–OBB", n, x => BatchQuery.Distances(spheres, obbs, x));
-                SameBits("sphere–OBB one", n, x => BatchQuery.Distances(s.Spheres[j], obbs, x));
-                SameVerdicts("sphere–OBB", n, x => BatchQuery.Overlaps(spheres, obbs, x));
-                SameVerdicts("sphere–OBB one", n, x => BatchQuery.Overlaps(s.Spheres[j], obbs, x));
-                SameBits("segment–segment", n, x => BatchQuery.Distances(segments, segments2, x));
-                SameBits("segment–segment one", n, x => BatchQuery.Distances(s.Segments[j], segments2, x));
-                SameVerdicts("OBB–OBB", n, x => BatchQuery.Overlaps(obbs, obbs2, x));
-                SameVerdicts("OBB–OBB one", n, x => BatchQuery.Overlaps(s.Obbs[j], obbs2, x));
-            }
+                s.EachQuery(n, k * n / 3, (name, query) => SameBits(name, n, query), (name, query) => SameVerdicts(name, n, query));
         }
 
         [Test]

@@ -71,39 +71,7 @@ namespace ProximityTests.Batch
         public void SplitRunsGiveTheOneThreadResults(int n, bool vectorized)
         {
             Runner.Vectorized = vectorized;
-            var s = Shapes.Value;
-            var points = new PointSet(s.Points.AsSpan(0, n));
-            var spheres = new SphereSet(s.Spheres.AsSpan(0, n));
-            var spheres2 = new SphereSet(s.Spheres2.AsSpan(0, n));
-            var boxes = new AabbSet(s.Boxes.AsSpan(0, n));
-            var boxes2 = new AabbSet(s.Boxes2.AsSpan(0, n));
-            var obbs = new ObbSet(s.Obbs.AsSpan(0, n));
-            var obbs2 = new ObbSet(s.Obbs2.AsSpan(0, n));
-            var segments = new SegmentSet(s.Segments.AsSpan(0, n));
-            var segments2 = new SegmentSet(s.Segments2.AsSpan(0, n));
-            int j = n / 3;
-            SameBits("sphere–sphere", n, x => BatchQuery.Distances(spheres, spheres2, x));
-            SameBits("sphere–sphere one", n, x => BatchQuery.Distances(s.Spheres[j], spheres2, x));
-            SameVerdicts("sphere–sphere", n, x => BatchQuery.Overlaps(spheres, spheres2, x));
-            SameVerdicts("sphere–sphere one", n, x => BatchQuery.Overlaps(s.Spheres[j], spheres2, x));
-            SameBits("point–AABB", n, x => BatchQuery.Distances(points, boxes, x));
-            SameBits("point–AABB one", n, x => BatchQuery.Distances(s.Points[j], boxes, x));
-            SameVerdicts("point–AABB", n, x => BatchQuery.Overlaps(points, boxes, x));
-            SameVerdicts("point–AABB one", n, x => BatchQuery.Overlaps(s.Points[j], boxes, x));
-            SameBits("sphere–AABB", n, x => BatchQuery.Distances(spheres, boxes2, x));
-            SameBits("sphere–AABB one", n, x => BatchQuery.Distances(s.Spheres[j], boxes2, x));
-            SameVerdicts("sphere–AABB", n, x => BatchQuery.Overlaps(spheres, boxes2, x));
-            SameVerdicts("sphere–AABB one", n, x => BatchQuery.Overlaps(s.Spheres[j], boxes2, x));
-            SameVerdicts("AABB–AABB", n, x => BatchQuery.Overlaps(boxes, boxes2, x));
-            SameVerdicts("AABB–AABB one", n, x => BatchQuery.Overlaps(s.Boxes[j], boxes2, x));
-            SameBits("sphere–OBB", n, x => BatchQuery.Distances(spheres, obbs, x));
-            SameBits("sphere–OBB one", n, x => BatchQuery.Distances(s.Spheres[j], obbs, x));
-            SameVerdicts("sphere–OBB", n, x => BatchQuery.Overlaps(spheres, obbs, x));
-            SameVerdicts("sphere–OBB one", n, x => BatchQuery.Overlaps(s.Spheres[j], obbs, x));
-            SameBits("segment–segment", n, x => BatchQuery.Distances(segments, segments2, x));
-            SameBits("segment–segment one", n, x => BatchQuery.Distances(s.Segments[j], segments2, x));
-            SameVerdicts("OBB–OBB", n, x => BatchQuery.Overlaps(obbs, obbs2, x));
-            SameVerdicts("OBB–OBB one", n, x => BatchQuery.Overlaps(s.Obbs[j], obbs2, x));
+            Shapes.Value.EachQuery(n, n / 3, (name, query) => SameBits(name, n, query), (name, query) => SameVerdicts(name, n, query));
         }
 
         [Test]
