@@ -1,8 +1,9 @@
 namespace ProximityLib
 {
     /// <summary>
-    /// Closest-distance queries between float shapes: <c>ClosestDistance.Between(a, b)</c> for every pair of point,
-    /// segment, circle/sphere, AABB and OBB in 2D and 3D, in either argument order. Computed in double and rounded once.
+    /// Closest-distance queries between float shapes: <c>ClosestDistance.Between(a, b)</c> (witnesses) and
+    /// <c>ClosestDistance.Distance(a, b)</c> (the signed distance alone) for the pairs of 2D and 3D shapes listed in
+    /// docs/api.md, in either argument order. Computed in double and rounded once.
     /// </summary>
     public static partial class ClosestDistance { }
 
@@ -13,8 +14,9 @@ namespace ProximityLib
 namespace ProximityLib.Double
 {
     /// <summary>
-    /// Closest-distance queries in double precision: <c>ClosestDistance.Between(a, b)</c> for every pair of point,
-    /// segment, circle/sphere, AABB and OBB in 2D and 3D, in either argument order.
+    /// Closest-distance queries in double precision: <c>ClosestDistance.Between(a, b)</c> (witnesses) and
+    /// <c>ClosestDistance.Distance(a, b)</c> (the signed distance alone) for the pairs of 2D and 3D shapes listed in
+    /// docs/api.md, in either argument order.
     /// </summary>
     public static partial class ClosestDistance { }
 

@@ -91,6 +91,11 @@ namespace ProximityApiGen
             new Shape("Sphere", "Sphere", "a sphere", 3, false), new Shape("Circle", "Circle", "a circle", 2, false),
             new Shape("Aabb3", "Aabb3", "an AABB", 3, false), new Shape("Aabb2", "Aabb2", "an AABB", 2, false),
             new Shape("Obb3", "Obb3", "an OBB", 3, false), new Shape("Obb2", "Obb2", "an OBB", 2, false),
+            new Shape("Line3", "Line3", "a line", 3, false), new Shape("Line2", "Line2", "a line", 2, false),
+            new Shape("Ray3", "Ray3", "a ray", 3, false), new Shape("Ray2", "Ray2", "a ray", 2, false),
+            new Shape("Capsule3", "Capsule3", "a capsule", 3, false), new Shape("Capsule2", "Capsule2", "a capsule", 2, false),
+            new Shape("Triangle3", "Triangle3", "a triangle", 3, false), new Shape("Triangle2", "Triangle2", "a triangle", 2, false),
+            new Shape("HalfSpace", "HalfSpace", "a half-space", 3, false), new Shape("HalfPlane", "HalfPlane", "a half-plane", 2, false),
         }.ToDictionary(s => s.Double);
     }
 

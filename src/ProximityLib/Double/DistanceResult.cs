@@ -19,9 +19,9 @@ namespace ProximityLib.Double
         public readonly Vector3D PointA;
         /// <summary>The witness point on (or in) shape B.</summary>
         public readonly Vector3D PointB;
-        /// <summary>When A is a segment, the parameter of PointA on it (0 = Start, 1 = End); otherwise 0.</summary>
+        /// <summary>When A is a segment or capsule, the parameter along its axis (0 = Start, 1 = End) of PointA (a capsule: of the axis point nearest PointA); a line or ray, the t with PointA = Origin + t·Direction; otherwise 0.</summary>
         public readonly double ParameterA;
-        /// <summary>When B is a segment, the parameter of PointB on it (0 = Start, 1 = End); otherwise 0.</summary>
+        /// <summary>When B is a segment or capsule, the parameter along its axis (0 = Start, 1 = End) of PointB (a capsule: of the axis point nearest PointB); a line or ray, the t with PointB = Origin + t·Direction; otherwise 0.</summary>
         public readonly double ParameterB;
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -70,9 +70,9 @@ namespace ProximityLib.Double
         public readonly Vector2D PointA;
         /// <summary>The witness point on (or in) shape B.</summary>
         public readonly Vector2D PointB;
-        /// <summary>When A is a segment, the parameter of PointA on it (0 = Start, 1 = End); otherwise 0.</summary>
+        /// <summary>When A is a segment or capsule, the parameter along its axis (0 = Start, 1 = End) of PointA (a capsule: of the axis point nearest PointA); a line or ray, the t with PointA = Origin + t·Direction; otherwise 0.</summary>
         public readonly double ParameterA;
-        /// <summary>When B is a segment, the parameter of PointB on it (0 = Start, 1 = End); otherwise 0.</summary>
+        /// <summary>When B is a segment or capsule, the parameter along its axis (0 = Start, 1 = End) of PointB (a capsule: of the axis point nearest PointB); a line or ray, the t with PointB = Origin + t·Direction; otherwise 0.</summary>
         public readonly double ParameterB;
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -53,5 +53,32 @@ namespace ProximityLib
             exponent = Math.Min(1022, Math.Max(-1022, exponent));
             return BitConverter.Int64BitsToDouble((1023 - exponent) << 52);
         }
+
+        /// <summary>
+        /// The unit vector along a finite non-zero v: v·k (k a power of two, exact) divided by its length l, so |v|² neither
+        /// overflows nor underflows for any finite v; |v| = l / k. Throws <see cref="ArgumentException"/> naming the
+        /// parameter on a zero or non-finite v.
+        /// </summary>
+        public static Double.Vector3D Unit(Double.Vector3D v, string name, out double k, out double l)
+        {
+            Finite(v, name);
+            double m = Math.Max(Math.Abs(v.X), Math.Max(Math.Abs(v.Y), Math.Abs(v.Z)));
+            if (m == 0) throw new ArgumentException($"{name} must be non-zero (got {v}).", name);
+            k = InversePowerOfTwo(m);
+            var u = v * k;
+            l = u.Length;
+            return NoNegativeZero(u / l);
+        }
+
+        public static Double.Vector2D Unit(Double.Vector2D v, string name, out double k, out double l)
+        {
+            Finite(v, name);
+            double m = Math.Max(Math.Abs(v.X), Math.Abs(v.Y));
+            if (m == 0) throw new ArgumentException($"{name} must be non-zero (got {v}).", name);
+            k = InversePowerOfTwo(m);
+            var u = v * k;
+            l = u.Length;
+            return NoNegativeZero(u / l);
+        }
     }
 }
