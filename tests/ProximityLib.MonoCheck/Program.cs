@@ -258,6 +258,30 @@ namespace ProximityMonoCheck
                 () => D.Obb2.FromCorners(new[] { V(0, 0), V(2, 0), V(2, 1), V(0, 1) }, V(1, 0), V(0, 1)),
                 () => D.Obb2.FromCorners(new[] { V(0, 0), V(0.6, 0.8), V(-1.0, 2.0), V(-1.6, 1.2) }, V(0.6, 0.8), V(-0.8, 0.6)),
                 () => D.Obb2.FromCorners(new D.Vector2D[3], V(1, 0), V(0, 1)));
+            Make(typeof(D.Line3), ".ctor", new[] { typeof(D.Vector3D), typeof(D.Vector3D) },
+                () => new D.Line3(V(1, 2, 3), V(3e-300, 4e-300, 0)), () => new D.Line3(V(1, 2, 3), V(0, 0, 0)));
+            Make(typeof(D.Line2), ".ctor", new[] { typeof(D.Vector2D), typeof(D.Vector2D) },
+                () => new D.Line2(V(1, 2), V(3e300, -4e300)), () => new D.Line2(V(double.NaN, 2), V(1, 0)));
+            Make(typeof(D.Ray3), ".ctor", new[] { typeof(D.Vector3D), typeof(D.Vector3D) },
+                () => new D.Ray3(V(-1, 0, 0), V(1, 1, 1)), () => new D.Ray3(V(0, 0, 0), V(double.PositiveInfinity, 0, 0)));
+            Make(typeof(D.Ray2), ".ctor", new[] { typeof(D.Vector2D), typeof(D.Vector2D) },
+                () => new D.Ray2(V(0, 0), V(0, -2)), () => new D.Ray2(V(0, 0), V(0, 0)));
+            Make(typeof(D.Capsule3), ".ctor", new[] { typeof(D.Vector3D), typeof(D.Vector3D), typeof(double) },
+                () => new D.Capsule3(V(0, 0, 0), V(0, 2, 0), 0.5), () => new D.Capsule3(V(0, 0, 0), V(0, 2, 0), -0.5));
+            Make(typeof(D.Capsule2), ".ctor", new[] { typeof(D.Vector2D), typeof(D.Vector2D), typeof(double) },
+                () => new D.Capsule2(V(1, 1), V(1, 1), 0), () => new D.Capsule2(V(1, 1), V(1, double.NaN), 1));
+            Make(typeof(D.Triangle3), ".ctor", new[] { typeof(D.Vector3D), typeof(D.Vector3D), typeof(D.Vector3D) },
+                () => new D.Triangle3(V(0, 0, 0), V(1, 0, 0), V(2, 0, 0)), () => new D.Triangle3(V(0, 0, 0), V(1, 0, 0), V(0, double.NaN, 0)));
+            Make(typeof(D.Triangle2), ".ctor", new[] { typeof(D.Vector2D), typeof(D.Vector2D), typeof(D.Vector2D) },
+                () => new D.Triangle2(V(0, 0), V(1, 0), V(0, 1)), () => new D.Triangle2(V(0, 0), V(1, 0), V(double.NegativeInfinity, 1)));
+            Make(typeof(D.HalfSpace), ".ctor", new[] { typeof(D.Vector3D), typeof(double) },
+                () => new D.HalfSpace(V(0, 3, 4), 10), () => new D.HalfSpace(V(1e-300, 0, 0), 1e300), () => new D.HalfSpace(V(0, 0, 0), 1));
+            Make(typeof(D.HalfSpace), "FromPointNormal", new[] { typeof(D.Vector3D), typeof(D.Vector3D) },
+                () => D.HalfSpace.FromPointNormal(V(1e6, 0, 1), V(0, 0, 2)), () => D.HalfSpace.FromPointNormal(V(1, 0, 1), V(0, double.NaN, 2)));
+            Make(typeof(D.HalfPlane), ".ctor", new[] { typeof(D.Vector2D), typeof(double) },
+                () => new D.HalfPlane(V(-3, 4), 1), () => new D.HalfPlane(V(1, 0), double.NaN));
+            Make(typeof(D.HalfPlane), "FromPointNormal", new[] { typeof(D.Vector2D), typeof(D.Vector2D) },
+                () => D.HalfPlane.FromPointNormal(V(2, 3), V(0, 1e-310)), () => D.HalfPlane.FromPointNormal(V(2, 3), V(0, 0)));
         }
 
         private static void FloatFactories()
@@ -305,6 +329,30 @@ namespace ProximityMonoCheck
             Make(typeof(F.Obb2), "FromCorners", new[] { typeof(ReadOnlySpan<Vector2>), typeof(Vector2), typeof(Vector2) },
                 () => F.Obb2.FromCorners(new[] { Vector2.Zero, new Vector2(2, 0), new Vector2(2, 1), new Vector2(0, 1) }, Vector2.UnitX, Vector2.UnitY),
                 () => F.Obb2.FromCorners(new Vector2[5], Vector2.UnitX, Vector2.UnitY));
+            Make(typeof(F.Line3), ".ctor", new[] { typeof(Vector3), typeof(Vector3) },
+                () => new F.Line3(Far3, new Vector3(0, 0, 1e-30f)), () => new F.Line3(Vector3.One, Vector3.Zero));
+            Make(typeof(F.Line2), ".ctor", new[] { typeof(Vector2), typeof(Vector2) },
+                () => new F.Line2(Vector2.One, new Vector2(3, 4)), () => new F.Line2(new Vector2(float.NaN), Vector2.UnitX));
+            Make(typeof(F.Ray3), ".ctor", new[] { typeof(Vector3), typeof(Vector3) },
+                () => new F.Ray3(Vector3.Zero, new Vector3(1e30f, 1e30f, 0)), () => new F.Ray3(Vector3.Zero, new Vector3(0, float.NaN, 1)));
+            Make(typeof(F.Ray2), ".ctor", new[] { typeof(Vector2), typeof(Vector2) },
+                () => new F.Ray2(Far2, -Vector2.UnitY), () => new F.Ray2(Far2, Vector2.Zero));
+            Make(typeof(F.Capsule3), ".ctor", new[] { typeof(Vector3), typeof(Vector3), typeof(float) },
+                () => new F.Capsule3(Vector3.Zero, Vector3.UnitY, 0.25f), () => new F.Capsule3(Vector3.Zero, Vector3.UnitY, float.PositiveInfinity));
+            Make(typeof(F.Capsule2), ".ctor", new[] { typeof(Vector2), typeof(Vector2), typeof(float) },
+                () => new F.Capsule2(Far2, Far2, 1), () => new F.Capsule2(Vector2.Zero, Vector2.UnitY, -1));
+            Make(typeof(F.Triangle3), ".ctor", new[] { typeof(Vector3), typeof(Vector3), typeof(Vector3) },
+                () => new F.Triangle3(Vector3.Zero, Vector3.UnitX, Vector3.UnitY), () => new F.Triangle3(Vector3.Zero, new Vector3(float.NaN), Vector3.UnitY));
+            Make(typeof(F.Triangle2), ".ctor", new[] { typeof(Vector2), typeof(Vector2), typeof(Vector2) },
+                () => new F.Triangle2(Vector2.One, Vector2.One, Vector2.One), () => new F.Triangle2(Vector2.One, Vector2.One, new Vector2(0, float.PositiveInfinity)));
+            Make(typeof(F.HalfSpace), ".ctor", new[] { typeof(Vector3), typeof(float) },
+                () => new F.HalfSpace(new Vector3(0, 2, 0), -1), () => new F.HalfSpace(Vector3.Zero, 0));
+            Make(typeof(F.HalfSpace), "FromPointNormal", new[] { typeof(Vector3), typeof(Vector3) },
+                () => F.HalfSpace.FromPointNormal(Far3, new Vector3(1, 1, 1)), () => F.HalfSpace.FromPointNormal(new Vector3(float.NaN), Vector3.UnitY));
+            Make(typeof(F.HalfPlane), ".ctor", new[] { typeof(Vector2), typeof(float) },
+                () => new F.HalfPlane(new Vector2(1, 1), 2), () => new F.HalfPlane(Vector2.UnitX, float.NaN));
+            Make(typeof(F.HalfPlane), "FromPointNormal", new[] { typeof(Vector2), typeof(Vector2) },
+                () => F.HalfPlane.FromPointNormal(Far2, new Vector2(0, -3)), () => F.HalfPlane.FromPointNormal(Far2, Vector2.Zero));
         }
 
         /// <summary>Marks the member with this exact signature as called and prints what each case makes (or the parameter it is refused for).</summary>
