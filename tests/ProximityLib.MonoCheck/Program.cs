@@ -32,6 +32,7 @@ namespace ProximityMonoCheck
             Run("float 2D queries", Float2);
             Run("double 3D queries", Double3);
             Run("double 2D queries", Double2);
+            Run("queries with the lines, rays, capsules, triangles and half-spaces", NewShapePairs);
             Run("double factories", DoubleFactories);
             Run("float factories", FloatFactories);
             Run("batch", Batch);
@@ -176,6 +177,70 @@ namespace ProximityMonoCheck
             Pairs(a, a, DC.Between, DC.Distance, DQ.Overlaps); Pairs(a, b, DC.Between, DC.Distance, DQ.Overlaps);
             Pairs(b, p, DC.Between, DC.Distance, DQ.Overlaps); Pairs(b, g, DC.Between, DC.Distance, DQ.Overlaps); Pairs(b, c, DC.Between, DC.Distance, DQ.Overlaps);
             Pairs(b, a, DC.Between, DC.Distance, DQ.Overlaps); Pairs(b, b, DC.Between, DC.Distance, DQ.Overlaps);
+        }
+
+        // ---- The pairs with the shapes of issue 12: every such public overload, found by reflection, on four inputs per
+        //      shape (the float ones and the double forms they hold), so a pair is covered the moment it exists. ----
+
+        private static readonly Vector3[] Dir3 = { Vector3.UnitX, new Vector3(1, 1, 0), new Vector3(-1, 2, 0.5f), new Vector3(0, 0, -1) };
+        private static readonly Vector2[] Dir2 = { Vector2.UnitX, new Vector2(1, 1), new Vector2(-1, 2), new Vector2(0, -1) };
+
+        private static readonly Dictionary<Type, object[]> FloatSamples = new Dictionary<Type, object[]>
+        {
+            [typeof(Vector3)] = P3.Cast<object>().ToArray(), [typeof(F.Segment3)] = G3.Cast<object>().ToArray(),
+            [typeof(F.Sphere)] = S3.Cast<object>().ToArray(), [typeof(F.Aabb3)] = A3.Cast<object>().ToArray(), [typeof(F.Obb3)] = B3.Cast<object>().ToArray(),
+            [typeof(Vector2)] = P2.Cast<object>().ToArray(), [typeof(F.Segment2)] = G2.Cast<object>().ToArray(),
+            [typeof(F.Circle)] = C2.Cast<object>().ToArray(), [typeof(F.Aabb2)] = A2.Cast<object>().ToArray(), [typeof(F.Obb2)] = B2.Cast<object>().ToArray(),
+            [typeof(F.Line3)] = Enumerable.Range(0, 4).Select(i => (object)new F.Line3(P3[i] + new Vector3(0, 0.5f, 0), Dir3[i])).ToArray(),
+            [typeof(F.Ray3)] = Enumerable.Range(0, 4).Select(i => (object)new F.Ray3(P3[i] + new Vector3(-2, 0, 0), Dir3[i])).ToArray(),
+            [typeof(F.Capsule3)] = Enumerable.Range(0, 4).Select(i => (object)new F.Capsule3(G3[i].Start, G3[i].End, 0.25f * i)).ToArray(),
+            [typeof(F.Triangle3)] = Enumerable.Range(0, 4).Select(i => (object)new F.Triangle3(P3[i], P3[i] + Dir3[i], P3[i] + new Vector3(0, 1, 1))).ToArray(),
+            [typeof(F.HalfSpace)] = Enumerable.Range(0, 4).Select(i => (object)F.HalfSpace.FromPointNormal(P3[i], Dir3[(i + 1) % 4])).ToArray(),
+            [typeof(F.Line2)] = Enumerable.Range(0, 4).Select(i => (object)new F.Line2(P2[i] + new Vector2(0, 0.5f), Dir2[i])).ToArray(),
+            [typeof(F.Ray2)] = Enumerable.Range(0, 4).Select(i => (object)new F.Ray2(P2[i] + new Vector2(-2, 0), Dir2[i])).ToArray(),
+            [typeof(F.Capsule2)] = Enumerable.Range(0, 4).Select(i => (object)new F.Capsule2(G2[i].Start, G2[i].End, 0.25f * i)).ToArray(),
+            [typeof(F.Triangle2)] = Enumerable.Range(0, 4).Select(i => (object)new F.Triangle2(P2[i], P2[i] + Dir2[i], P2[i] + new Vector2(-1, 1))).ToArray(),
+            [typeof(F.HalfPlane)] = Enumerable.Range(0, 4).Select(i => (object)F.HalfPlane.FromPointNormal(P2[i], Dir2[(i + 1) % 4])).ToArray(),
+        };
+
+        private static readonly Type[] NewShapes =
+        {
+            typeof(F.Line3), typeof(F.Ray3), typeof(F.Capsule3), typeof(F.Triangle3), typeof(F.HalfSpace),
+            typeof(F.Line2), typeof(F.Ray2), typeof(F.Capsule2), typeof(F.Triangle2), typeof(F.HalfPlane),
+        };
+
+        /// <summary>The double form of a float sample: the vector cast, or the shape's implicit conversion.</summary>
+        private static object Widen(object x) => x switch
+        {
+            Vector3 v => (D.Vector3D)v,
+            Vector2 v => (D.Vector2D)v,
+            _ => x.GetType().GetMethods(BindingFlags.Public | BindingFlags.Static).First(m => m.Name == "op_Implicit" && m.GetParameters()[0].ParameterType == x.GetType()).Invoke(null, new[] { x })!,
+        };
+
+        private static void NewShapePairs()
+        {
+            var doubleSamples = FloatSamples.ToDictionary(kv => Widen(kv.Value[0]).GetType(), kv => kv.Value.Select(Widen).ToArray());
+            var newTypes = new HashSet<Type>(NewShapes.Concat(NewShapes.Select(t => Widen(FloatSamples[t][0]).GetType())));
+            foreach (var (type, samples) in new[] { (typeof(FC), FloatSamples), (typeof(FQ), FloatSamples), (typeof(DC), doubleSamples), (typeof(DQ), doubleSamples) })
+            {
+                var methods = type.GetMethods(BindingFlags.Public | BindingFlags.Static | BindingFlags.DeclaredOnly)
+                    .Where(m => (m.Name == "Between" || m.Name == "Distance" || m.Name == "Overlaps") && m.GetParameters().Length == 2
+                                && m.GetParameters().Any(p => newTypes.Contains(p.ParameterType)))
+                    .OrderBy(Signature, StringComparer.Ordinal);
+                foreach (var m in methods)
+                {
+                    var ps = m.GetParameters();
+                    if (!samples.TryGetValue(ps[0].ParameterType, out var a) || !samples.TryGetValue(ps[1].ParameterType, out var b))
+                    {
+                        Fail($"no samples for {Signature(m)}");
+                        continue;
+                    }
+                    Called.Add(Signature(m));
+                    for (int i = 0; i < a.Length; i++)
+                        for (int j = 0; j < b.Length; j++)
+                            Line($"{Signature(m)} [{i},{j}] {Show(m.Invoke(null, new[] { a[i], b[j] }))}");
+                }
+            }
         }
 
         /// <summary>Both queries on every pairing of a and b. The delegates are the overloads the compiler picked, so they are what coverage counts.</summary>
