@@ -9,6 +9,7 @@ using System.Text.RegularExpressions;
 //     write src/ProximityLib/Pairs/<Pair>.g.cs from each hand-written src/ProximityLib/Pairs/<Pair>.cs
 // dotnet run --project tests/ProximityLib.ApiGen -- check
 //     fail (exit 1) when a committed .g.cs differs from what sync would write, or has no hand-written source
+// Both also cover docs/catalogue.md, the paper's catalogue of pairs (docs/seed-pairs.csv) against the pair files.
 //
 // A pair file holds the pair's double algorithm as internal kernels, and nothing else:
 //   ClosestDistance: DistanceResult Core(A a, B b, out bool inRange)   (summary: the contract, then "Algorithm: …")
@@ -25,10 +26,16 @@ namespace ProximityApiGen
         {
             string pairs = Path.Combine(FindRepo(), "src", "ProximityLib", "Pairs");
             var wanted = new SortedDictionary<string, string>(StringComparer.Ordinal);
+            string catalogue;
             try
             {
+                var kernels = new List<(string, string, string)>();
                 foreach (var file in Directory.GetFiles(pairs, "*.cs").Where(f => !f.EndsWith(".g.cs", StringComparison.Ordinal)).OrderBy(f => f, StringComparer.Ordinal))
+                {
                     wanted[Path.ChangeExtension(file, ".g.cs")] = Generator.Generate(Path.GetFileName(file), File.ReadAllText(file));
+                    kernels.AddRange(Generator.Queries(Path.GetFileName(file), File.ReadAllText(file)));
+                }
+                catalogue = Catalogue.Generate(FindRepo(), kernels);
             }
             catch (FormatException e)
             {
@@ -46,11 +53,18 @@ namespace ProximityApiGen
                         File.WriteAllText(path, text);
                         Console.WriteLine($"wrote {Rel(path)}");
                     }
+                    if (!File.Exists(Catalogue.Path(FindRepo())) || File.ReadAllText(Catalogue.Path(FindRepo())) != catalogue)
+                    {
+                        File.WriteAllText(Catalogue.Path(FindRepo()), catalogue);
+                        Console.WriteLine("wrote docs/catalogue.md");
+                    }
                     Console.WriteLine($"{wanted.Count} pair files in sync");
                     return 0;
                 case "check":
                     var problems = existing.Where(f => !wanted.ContainsKey(f)).Select(f => $"{Rel(f)} has no hand-written pair file").ToList();
                     problems.AddRange(wanted.Where(w => !File.Exists(w.Key) || File.ReadAllText(w.Key) != w.Value).Select(w => $"{Rel(w.Key)} is not what its pair file generates"));
+                    if (!File.Exists(Catalogue.Path(FindRepo())) || File.ReadAllText(Catalogue.Path(FindRepo())) != catalogue)
+                        problems.Add("docs/catalogue.md is not what the pair files and docs/seed-pairs.csv generate");
                     foreach (var p in problems) Console.WriteLine($"api: {p}");
                     Console.WriteLine(problems.Count == 0
                         ? $"api: {wanted.Count} generated pair files in sync"
@@ -117,6 +131,10 @@ namespace ProximityApiGen
         private static readonly Regex Declaration = new Regex(
             @"^\s*internal static (?<result>\w+) (?<name>Core|DistanceCore)\((?<a>\w+) a, (?<b>\w+) b(?<guard>, out bool inRange)?\)");
         private static readonly Regex Class = new Regex(@"^\s*public static partial class (?<name>\w+)");
+
+        /// <summary>The public queries a pair file yields: (Between or Overlaps, A, B) with the double type names.</summary>
+        public static IEnumerable<(string Query, string A, string B)> Queries(string fileName, string source) =>
+            Parse(fileName, source).Where(k => k.Query != "Distance").Select(k => (k.Query, k.A.Double, k.B.Double));
 
         public static string Generate(string fileName, string source)
         {
