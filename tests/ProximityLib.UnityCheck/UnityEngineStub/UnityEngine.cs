@@ -43,6 +43,37 @@ namespace UnityEngine
         public Vector3 localScale { get; set; }
         public Vector3 lossyScale => default;
         public Vector3 TransformVector(Vector3 vector) => vector;
+        public Vector3 TransformPoint(Vector3 position) => position;
+    }
+
+    public class Collider : Component { }
+
+    public class CapsuleCollider : Collider
+    {
+        public Vector3 center { get; set; }
+        public float radius { get; set; }
+        public float height { get; set; }
+        public int direction { get; set; }
+    }
+
+    public sealed class Mesh : Object
+    {
+        public Vector3[] vertices { get => Array.Empty<Vector3>(); set { } }
+        public int[] triangles { get => Array.Empty<int>(); set { } }
+    }
+
+    public struct Ray
+    {
+        public Ray(Vector3 origin, Vector3 direction) { this.origin = origin; this.direction = direction; }
+        public Vector3 origin { get; set; }
+        public Vector3 direction { get; set; }
+    }
+
+    public struct Plane
+    {
+        public Plane(Vector3 inNormal, float d) { normal = inNormal; distance = d; }
+        public Vector3 normal { get; set; }
+        public float distance { get; set; }
     }
 
     public enum PrimitiveType { Sphere = 0, Capsule = 1, Cylinder = 2, Cube = 3, Plane = 4, Quad = 5 }
