@@ -6,10 +6,15 @@ using System.Text;
 using System.Text.RegularExpressions;
 
 // dotnet run --project tests/ProximityLib.ApiGen -- sync
-//     write src/ProximityLib/Pairs/<Pair>.g.cs from each hand-written src/ProximityLib/Pairs/<Pair>.cs
+//     write src/ProximityLib/Pairs/<Pair>.g.cs from each hand-written src/ProximityLib/Pairs/<Pair>.cs, and
+//     src/ProximityLib/Raycasts/<Shape>.g.cs from each src/ProximityLib/Raycasts/<Shape>.cs
 // dotnet run --project tests/ProximityLib.ApiGen -- check
 //     fail (exit 1) when a committed .g.cs differs from what sync would write, or has no hand-written source
 // Both also cover docs/catalogue.md, the paper's catalogue of pairs (docs/seed-pairs.csv) against the pair files.
+//
+// A ray-cast file holds internal kernels RayHit3/RayHit2 Core(Ray3/Ray2 ray, S shape, out bool inRange) in Raycast,
+// summary "First hit of a ray on {noun} ({n}D): …"; the public double Cast adds the range guard, the rescaling slow
+// path and maxDistance, and the float Cast calls it and rounds once.
 //
 // A pair file holds the pair's double algorithm as internal kernels, and nothing else:
 //   ClosestDistance: DistanceResult Core(A a, B b, out bool inRange)   (summary: the contract, then "Algorithm: …")
@@ -25,16 +30,19 @@ namespace ProximityApiGen
         private static int Main(string[] args)
         {
             string pairs = Path.Combine(FindRepo(), "src", "ProximityLib", "Pairs");
+            string raycasts = Path.Combine(FindRepo(), "src", "ProximityLib", "Raycasts");
             var wanted = new SortedDictionary<string, string>(StringComparer.Ordinal);
             string catalogue;
             try
             {
                 var kernels = new List<(string, string, string)>();
-                foreach (var file in Directory.GetFiles(pairs, "*.cs").Where(f => !f.EndsWith(".g.cs", StringComparison.Ordinal)).OrderBy(f => f, StringComparer.Ordinal))
+                foreach (var file in Sources(pairs))
                 {
                     wanted[Path.ChangeExtension(file, ".g.cs")] = Generator.Generate(Path.GetFileName(file), File.ReadAllText(file));
                     kernels.AddRange(Generator.Queries(Path.GetFileName(file), File.ReadAllText(file)));
                 }
+                foreach (var file in Sources(raycasts))
+                    wanted[Path.ChangeExtension(file, ".g.cs")] = RayGenerator.Generate(Path.GetFileName(file), File.ReadAllText(file));
                 catalogue = Catalogue.Generate(FindRepo(), kernels);
             }
             catch (FormatException e)
@@ -42,7 +50,7 @@ namespace ProximityApiGen
                 Console.Error.WriteLine($"error: {e.Message}");
                 return 2;
             }
-            var existing = Directory.GetFiles(pairs, "*.g.cs");
+            var existing = Directory.GetFiles(pairs, "*.g.cs").Concat(Directory.Exists(raycasts) ? Directory.GetFiles(raycasts, "*.g.cs") : Array.Empty<string>()).ToArray();
             switch (args.FirstOrDefault())
             {
                 case "sync":
@@ -58,16 +66,16 @@ namespace ProximityApiGen
                         File.WriteAllText(Catalogue.Path(FindRepo()), catalogue);
                         Console.WriteLine("wrote docs/catalogue.md");
                     }
-                    Console.WriteLine($"{wanted.Count} pair files in sync");
+                    Console.WriteLine($"{wanted.Count} generated files in sync");
                     return 0;
                 case "check":
-                    var problems = existing.Where(f => !wanted.ContainsKey(f)).Select(f => $"{Rel(f)} has no hand-written pair file").ToList();
-                    problems.AddRange(wanted.Where(w => !File.Exists(w.Key) || File.ReadAllText(w.Key) != w.Value).Select(w => $"{Rel(w.Key)} is not what its pair file generates"));
+                    var problems = existing.Where(f => !wanted.ContainsKey(f)).Select(f => $"{Rel(f)} has no hand-written source file").ToList();
+                    problems.AddRange(wanted.Where(w => !File.Exists(w.Key) || File.ReadAllText(w.Key) != w.Value).Select(w => $"{Rel(w.Key)} is not what its source file generates"));
                     if (!File.Exists(Catalogue.Path(FindRepo())) || File.ReadAllText(Catalogue.Path(FindRepo())) != catalogue)
                         problems.Add("docs/catalogue.md is not what the pair files and docs/seed-pairs.csv generate");
                     foreach (var p in problems) Console.WriteLine($"api: {p}");
                     Console.WriteLine(problems.Count == 0
-                        ? $"api: {wanted.Count} generated pair files in sync"
+                        ? $"api: {wanted.Count} generated files in sync (pairs and ray casts)"
                         : $"api: {problems.Count} problem(s); run `dotnet run --project tests/ProximityLib.ApiGen -- sync`");
                     return problems.Count == 0 ? 0 : 1;
                 default:
@@ -75,6 +83,12 @@ namespace ProximityApiGen
                     return 2;
             }
         }
+
+        /// <summary>The hand-written sources of a folder (none when it does not exist), in ordinal order.</summary>
+        private static IEnumerable<string> Sources(string dir) =>
+            Directory.Exists(dir)
+                ? Directory.GetFiles(dir, "*.cs").Where(f => !f.EndsWith(".g.cs", StringComparison.Ordinal)).OrderBy(f => f, StringComparer.Ordinal)
+                : Enumerable.Empty<string>();
 
         private static string Rel(string path) => Path.GetRelativePath(FindRepo(), path);
 
@@ -289,7 +303,7 @@ namespace ProximityApiGen
         }
 
         /// <summary>The one-line or multi-line summary of the doc comment above line i (attributes skipped), or null.</summary>
-        private static string? SummaryAbove(string[] lines, int i)
+        internal static string? SummaryAbove(string[] lines, int i)
         {
             int j = i - 1;
             while (j >= 0 && lines[j].TrimStart().StartsWith("[", StringComparison.Ordinal)) j--;
@@ -297,6 +311,79 @@ namespace ProximityApiGen
             for (; j >= 0 && lines[j].TrimStart().StartsWith("///", StringComparison.Ordinal); j--) doc.Insert(0, lines[j].TrimStart().Substring(3).Trim());
             var m = Regex.Match(string.Join(" ", doc), "<summary>(.*?)</summary>");
             return m.Success ? m.Groups[1].Value.Trim() : null;
+        }
+    }
+
+    /// <summary>The public ray casts of a src/ProximityLib/Raycasts file: one double and one float Cast per kernel.</summary>
+    internal static class RayGenerator
+    {
+        private static readonly Regex Declaration = new Regex(
+            @"^\s*internal static (?<result>RayHit[23]) Core\((?<ray>Ray[23]) ray, (?<b>\w+) shape, out bool inRange\)");
+
+        public static string Generate(string fileName, string source)
+        {
+            var lines = source.Replace("\r\n", "\n").Split('\n');
+            var w = new Writer();
+            var kernels = new List<(string Result, string Ray, Shape B, string Summary)>();
+            for (int i = 0; i < lines.Length; i++)
+            {
+                if (Regex.IsMatch(lines[i], @"^\s*public static (?!partial class)"))
+                    throw new FormatException($"{fileName}:{i + 1}: public overloads are generated; a ray-cast file declares internal kernels only");
+                var m = Declaration.Match(lines[i]);
+                if (!m.Success) continue;
+                if (!Shape.All.TryGetValue(m.Groups["b"].Value, out var b))
+                    throw new FormatException($"{fileName}:{i + 1}: unknown shape type in {m.Value.Trim()}");
+                int dim = m.Groups["ray"].Value == "Ray3" ? 3 : 2;
+                if (b.Dim != dim || m.Groups["result"].Value != $"RayHit{dim}")
+                    throw new FormatException($"{fileName}:{i + 1}: {m.Groups["ray"].Value}, {b.Double} and {m.Groups["result"].Value} differ in dimension");
+                string head = $"First hit of a ray on {b.Noun} ({dim}D): ";
+                string? summary = Generator.SummaryAbove(lines, i);
+                if (summary == null || !summary.StartsWith(head, StringComparison.Ordinal))
+                    throw new FormatException($"{fileName}:{i + 1}: the Core's summary must start \"{head}\" (it documents the public Cast)");
+                kernels.Add((m.Groups["result"].Value, m.Groups["ray"].Value, b, summary));
+            }
+            if (kernels.Count == 0) throw new FormatException($"{fileName}: a ray-cast file needs at least one Raycast.Core");
+
+            w.Line($"// Generated by tests/ProximityLib.ApiGen from Raycasts/{fileName}: do not edit. Edit that file, then run");
+            w.Line("// `dotnet run --project tests/ProximityLib.ApiGen -- sync`. The public ray casts against the shape, double and float.");
+            w.Line("using System.Numerics;");
+            w.Line("using System.Runtime.CompilerServices;");
+            w.Line("using Dbl = ProximityLib.Double;");
+            w.Line();
+            w.Open("namespace ProximityLib.Double");
+            w.Open("public static partial class Raycast");
+            foreach (var k in kernels)
+            {
+                w.Doc(k.Summary + " A hit farther than maxDistance is a miss; a negative or NaN maxDistance throws System.ArgumentException.");
+                w.Inline();
+                w.Open($"public static {k.Result} Cast({k.Ray} ray, {k.B.Double} shape, double maxDistance = double.PositiveInfinity)");
+                w.Line("var hit = Core(ray, shape, out bool inRange);");
+                w.Line($"return {k.Result}.Within(inRange ? hit : Slow(ray, shape), maxDistance);");
+                w.Close();
+            }
+            w.Line();
+            foreach (var k in kernels)
+            {
+                w.Line("[MethodImpl(MethodImplOptions.NoInlining)]");
+                w.Line($"private static {k.Result} Slow({k.Ray} ray, {k.B.Double} shape) => Wide.Cast(ray, shape, static (x, y) => Core(x, y, out _));");
+            }
+            w.Close();
+            w.Close();
+            w.Line();
+            w.Open("namespace ProximityLib");
+            w.Open("public static partial class Raycast");
+            foreach (var k in kernels)
+            {
+                string s = k.Summary;
+                int algorithm = s.IndexOf(" Algorithm: ", StringComparison.Ordinal);
+                if (algorithm >= 0) s = s.Substring(0, algorithm);
+                string head = $"First hit of a ray on {k.B.Noun} ({k.B.Dim}D)";
+                w.Method(head + ", computed in double and rounded once" + s.Substring(head.Length) + " A hit farther than maxDistance is a miss; a negative or NaN maxDistance throws System.ArgumentException.",
+                    $"public static {k.Result} Cast({k.Ray} ray, {k.B.Float} shape, float maxDistance = float.PositiveInfinity) => new {k.Result}(Dbl.Raycast.Cast(ray.Inner, {k.B.FromFloat("shape")}, maxDistance));");
+            }
+            w.Close();
+            w.Close();
+            return w.ToString();
         }
     }
 
