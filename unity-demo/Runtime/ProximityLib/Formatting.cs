@@ -19,6 +19,7 @@ namespace ProximityLib
         private static IFormatProvider Provider(IFormatProvider? provider) => provider ?? CultureInfo.InvariantCulture;
         private static string Separator(IFormatProvider? provider) => NumberFormatInfo.GetInstance(Provider(provider)).NumberGroupSeparator + " ";
 
+        public static string Of(bool v) => v ? "True" : "False";
         public static string Of(double v, string? format, IFormatProvider? provider) => v.ToString(Format(format), Provider(provider));
         public static string Of(float v, string? format, IFormatProvider? provider) => v.ToString(Format(format), Provider(provider));
 

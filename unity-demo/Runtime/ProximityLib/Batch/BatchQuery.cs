@@ -14,7 +14,7 @@ namespace ProximityLib.Batch
     /// configurations whose size lies within 2^±28, where squares stay normal floats (segment–segment scales its fourth
     /// powers down to squares).
     /// </summary>
-    public static class BatchQuery
+    public static partial class BatchQuery
     {
         /// <summary>
         /// The most threads one batch call uses, the calling thread included; default <see cref="Environment.ProcessorCount"/>.

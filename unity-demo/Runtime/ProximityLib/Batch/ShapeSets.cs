@@ -136,4 +136,34 @@ namespace ProximityLib.Batch
             HX[i] = h.X; HY[i] = h.Y; HZ[i] = h.Z;
         }
     }
+
+    /// <summary>Triangles as SoA float arrays of their vertices.</summary>
+    public sealed class TriangleSet : ShapeSet
+    {
+        internal readonly float[] AX, AY, AZ, BX, BY, BZ, CX, CY, CZ;
+
+        /// <summary>A set holding the given triangles.</summary>
+        public TriangleSet(ReadOnlySpan<Triangle3> triangles) : base(triangles.Length)
+        {
+            AX = Lanes(Count); AY = Lanes(Count); AZ = Lanes(Count);
+            BX = Lanes(Count); BY = Lanes(Count); BZ = Lanes(Count);
+            CX = Lanes(Count); CY = Lanes(Count); CZ = Lanes(Count);
+            for (int i = 0; i < triangles.Length; i++) Set(i, Spans.At(triangles, i));
+        }
+
+        /// <summary>Replaces triangle i (already validated by its constructor).</summary>
+        public void Set(int i, Triangle3 t)
+        {
+            var a = t.A; var b = t.B; var c = t.C;
+            AX[i] = a.X; AY[i] = a.Y; AZ[i] = a.Z; BX[i] = b.X; BY[i] = b.Y; BZ[i] = b.Z; CX[i] = c.X; CY[i] = c.Y; CZ[i] = c.Z;
+        }
+
+        /// <summary>The coordinate arrays of vertex A, B or C (0, 1, 2) along axis k.</summary>
+        internal float[] Coordinate(int vertex, int k) => vertex switch
+        {
+            0 => k == 0 ? AX : k == 1 ? AY : AZ,
+            1 => k == 0 ? BX : k == 1 ? BY : BZ,
+            _ => k == 0 ? CX : k == 1 ? CY : CZ,
+        };
+    }
 }

@@ -11,7 +11,7 @@ namespace ProximityLib.Double
     /// back; the symmetric ones use it only to break an exact tie. The order compares the first stored double, then
     /// (rarely) every field's bit pattern: a total order that tells apart even values == calls equal (0 and −0).
     /// </summary>
-    internal static class Order
+    internal static partial class Order
     {
         /// <summary>-1, 0 or 1 as the bit patterns of x and y compare.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

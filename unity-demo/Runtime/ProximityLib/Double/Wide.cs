@@ -125,6 +125,12 @@ namespace ProximityLib.Double
             new DistanceResult2(r.Distance * _up1 * _up2, r.DistanceSquared * _up1 * _up1 * _up2 * _up2,
                 Vector2D.From3(Back(r.PointA.To3())), Vector2D.From3(Back(r.PointB.To3())), r.ParameterA, r.ParameterB);
 
+        /// <summary>A ray hit mapped back: T scales like a length, the normal is a direction and stays.</summary>
+        public RayHit3 Back(in RayHit3 h) => h.Hit ? new RayHit3(h.T * _up1 * _up2, Back(h.Point), h.Normal, h.StartsInside) : h;
+
+        public RayHit2 Back(in RayHit2 h) =>
+            h.Hit ? new RayHit2(h.T * _up1 * _up2, Vector2D.From3(Back(h.Point.To3())), h.Normal, h.StartsInside) : h;
+
         private static double MaxAbs(Vector3D v) => Math.Max(Math.Abs(v.X), Math.Max(Math.Abs(v.Y), Math.Abs(v.Z)));
 
         /// <summary>floor(log2 m) for a finite m &gt; 0, subnormals included.</summary>
@@ -175,6 +181,22 @@ namespace ProximityLib.Double
         {
             var s = Measure(a, b);
             return core(a.Rescaled(s), b.Rescaled(s));
+        }
+
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static RayHit3 Cast<TA, TB>(TA ray, TB b, Func<TA, TB, RayHit3> core)
+            where TA : struct, IScalable<TA> where TB : struct, IScalable<TB>
+        {
+            var s = Measure(ray, b);
+            return s.Back(core(ray.Rescaled(s), b.Rescaled(s)));
+        }
+
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static RayHit2 Cast<TA, TB>(TA ray, TB b, Func<TA, TB, RayHit2> core)
+            where TA : struct, IScalable<TA> where TB : struct, IScalable<TB>
+        {
+            var s = Measure(ray, b);
+            return s.Back(core(ray.Rescaled(s), b.Rescaled(s)));
         }
 
         private static Rescale Measure<TA, TB>(TA a, TB b) where TA : struct, IScalable<TA> where TB : struct, IScalable<TB>

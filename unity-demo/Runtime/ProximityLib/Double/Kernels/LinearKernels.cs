@@ -1,0 +1,373 @@
+// Copied from src/ProximityLib/Double/Kernels/LinearKernels.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System;
+using System.Runtime.CompilerServices;
+
+namespace ProximityLib.Double
+{
+    /// <summary>
+    /// A linear component: a segment (Start + s·(End − Start), s in [0, 1]), a ray (Start + s·Dir, s ≥ 0) or a line (all
+    /// s); rays and lines have a unit Dir. 2D shapes are passed with z = 0.
+    /// </summary>
+    internal readonly struct Linear
+    {
+        public readonly Vector3D Start, End, Dir;
+        public readonly double Lo, Hi;
+
+        private Linear(Vector3D start, Vector3D end, Vector3D dir, double lo, double hi) { Start = start; End = end; Dir = dir; Lo = lo; Hi = hi; }
+
+        public static Linear Segment(Vector3D start, Vector3D end) => new Linear(start, end, end - start, 0, 1);
+        public static Linear Ray(Vector3D origin, Vector3D dir) => new Linear(origin, origin, dir, 0, double.PositiveInfinity);
+        public static Linear Line(Vector3D origin, Vector3D dir) => new Linear(origin, origin, dir, double.NegativeInfinity, double.PositiveInfinity);
+
+        public bool IsSegment => Hi == 1;
+        public bool IsRay => Lo == 0 && Hi != 1;
+
+        /// <summary>The point at parameter s (a segment's from its nearer endpoint).</summary>
+        public Vector3D PointAt(double s) => IsSegment ? Kernels.SegmentPoint(Start, End, s) : Start + Dir * s;
+    }
+
+    internal static partial class Kernels
+    {
+        /// <summary>
+        /// Point against a line (or a ray when <paramref name="ray"/>) through o with unit direction d: the projection
+        /// parameter t = d·(p − o) (clamped at 0 for a ray) and the residual (p − o) − t·d, formed from differences, so a
+        /// point far along the line loses only u·|p − o|. The push-out normal is formed only when
+        /// <paramref name="withNormal"/>; for a residual that is rounding against |p − o| its part along d is removed
+        /// first (as <see cref="PointSegment"/> does). <paramref name="inRange"/>: the squared residual lies in the fast
+        /// range or the residual is exactly zero.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static PointContact PointLinear(Vector3D p, Vector3D o, Vector3D d, bool ray, bool withNormal, out bool inRange)
+        {
+            var w = p - o;
+            double t = Vector3D.Dot(w, d);
+            if (ray && t <= 0) t = 0;
+            var r = t == 0 ? w : w - d * t;
+            double r2 = r.LengthSquared, dist = Math.Sqrt(r2);
+            inRange = Range.Length2(r, r2);
+            var n = default(Vector3D);
+            if (withNormal)
+            {
+                double len = dist;
+                if (t != 0 && r2 < w.LengthSquared * 8.673617379884035e-19) { r -= d * Vector3D.Dot(r, d); len = r.Length; }
+                n = len > 0 ? r * (1 / len) : AnyPerpendicular(d);
+            }
+            return new PointContact(dist, r2, o + d * t, n, t);
+        }
+
+        /// <summary>The distance of <see cref="PointLinear"/> alone (the same operations and <paramref name="inRange"/>).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double PointLinearDistance(Vector3D p, Vector3D o, Vector3D d, bool ray, out bool inRange)
+        {
+            var w = p - o;
+            double t = Vector3D.Dot(w, d);
+            if (ray && t <= 0) t = 0;
+            var r = t == 0 ? w : w - d * t;
+            double r2 = r.LengthSquared;
+            inRange = Range.Length2(r, r2);
+            return Math.Sqrt(r2);
+        }
+
+        /// <summary>Whether p lies on the line or ray: its residual is exactly zero (the test <see cref="PointLinear"/>'s distance makes).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool PointOnLinear(Vector3D p, Vector3D o, Vector3D d, bool ray)
+        {
+            var w = p - o;
+            double t = Vector3D.Dot(w, d);
+            if (ray && t <= 0) t = 0;
+            return (t == 0 ? w : w - d * t) == default;
+        }
+
+        /// <summary>
+        /// A point (or sphere of radius <paramref name="ra"/> centred at p) against a capsule: the point–segment contact
+        /// of p with the axis, less the radii; B's witness is pushed out of the axis by its radius along the contact
+        /// normal (<see cref="PointSegment"/>'s, deterministic when p lies on the axis), A's pushed in by ra.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static DistanceResult3 PointCapsule(Vector3D p, double ra, Vector3D b0, Vector3D b1, double rb, out bool inRange)
+        {
+            var c = PointSegment(p, b0, b1, true, out inRange);
+            double r = ra + rb, d = c.Distance - r;
+            inRange &= r <= double.MaxValue;
+            return new DistanceResult3(d, d > 0 ? d * d : 0, p - c.Normal * ra, c.Closest + c.Normal * rb, 0, c.Parameter);
+        }
+
+        /// <summary>
+        /// Two lines or rays (o, unit d): well apart in direction, the lines' closest parameters from cross products of
+        /// an accurately formed normal n = dA × dB (<see cref="AccurateCross"/>: the plain cross product cancels to noise
+        /// for nearly parallel directions, and the gap w·n/|n| and the parameters ((w × dB)·n, (w × dA)·n)/|n|² then
+        /// carry only u·|w|); when both lie on their shapes, the gap between the lines is the answer. Otherwise the
+        /// minimum lies where a ray starts: each ray's origin against the other shape, the smaller residual, ties to A.
+        /// Parallel lines: A's origin against B. Each boundary candidate is measured as the residual of the two points it
+        /// returns. Directions so close that the parameters would pass 1e300 count as parallel.
+        /// </summary>
+        public static double Unbounded(Vector3D oA, Vector3D dA, bool rayA, Vector3D oB, Vector3D dB, bool rayB, out double s, out double t, out bool inRange)
+        {
+            var w = oB - oA;
+            bool sized = Range.Length2(w, w.LengthSquared);
+            var n = AccurateCross(dA, dB);
+            double m = Range.MaxAbs(n);
+            if (m >= 1e-270)
+            {
+                // n scaled by a power of two so its largest component lies in [1, 2): |n|² stays normal however close
+                // the directions are, and the scaling is exact.
+                double k = InverseMagnitude(m);
+                var nk = n * k;
+                double nn = nk.LengthSquared;
+                double si = Vector3D.Dot(Vector3D.Cross(w, dB), nk) / nn * k;
+                double ti = Vector3D.Dot(Vector3D.Cross(w, dA), nk) / nn * k;
+                if (Math.Abs(si) <= 1e300 && Math.Abs(ti) <= 1e300 && (!rayA || si >= 0) && (!rayB || ti >= 0))
+                {
+                    s = si; t = ti;
+                    double gap = Vector3D.Dot(w, nk) / Math.Sqrt(nn), g2 = gap * gap;
+                    inRange = sized && (gap == 0 || Range.In(g2));
+                    return g2;
+                }
+            }
+
+            double best = double.PositiveInfinity;
+            s = 0; t = 0;
+            var v = default(Vector3D);
+            if (rayA || !rayB)
+            {
+                // A's origin against B.
+                double tc = -Vector3D.Dot(dB, w);
+                if (rayB && tc <= 0) tc = 0;
+                v = tc == 0 ? -w : -w - dB * tc;
+                best = v.LengthSquared;
+                t = tc;
+            }
+            if (rayB)
+            {
+                double sc = Vector3D.Dot(dA, w);
+                if (rayA && sc <= 0) sc = 0;
+                var r = sc == 0 ? w : w - dA * sc;
+                double r2 = r.LengthSquared;
+                if (r2 < best) { best = r2; v = r; s = sc; t = 0; }
+            }
+            inRange = sized && Range.Length2(v, best);
+            return best;
+        }
+
+        /// <summary>
+        /// A linear component against segment [b0, b1]: the squared distance, the parameters and the residual v = PointB −
+        /// PointA formed from differences. A segment goes to <see cref="SegmentSegmentCore"/> as it is. A line or ray is
+        /// first cut to the stretch that holds its closest point: the point of the line nearest a point of the segment is
+        /// that point's projection, whose parameter lies between the endpoints' (for a ray, clamped at 0), so the segment
+        /// kernel (with its nearly-parallel care) answers on that stretch, in the frame of the line's origin.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double LinearSegment(in Linear a, Vector3D b0, Vector3D b1, out double s, out double t, out Vector3D v, out bool inRange)
+        {
+            double r2;
+            if (a.IsSegment)
+            {
+                r2 = SegmentSegmentCore(a.Start, a.End, b0, b1, out s, out t, out inRange);
+                v = (b0 - a.Start) - (a.Dir * s - (b1 - b0) * t);
+                return r2;
+            }
+            var q0 = b0 - a.Start;
+            var q1 = b1 - a.Start;
+            double t0 = Vector3D.Dot(a.Dir, q0), t1 = Vector3D.Dot(a.Dir, q1);
+            double lo = Math.Min(t0, t1), hi = Math.Max(t0, t1);
+            if (a.IsRay) { lo = Math.Max(lo, 0); hi = Math.Max(hi, 0); }
+            var c0 = a.Dir * lo;
+            var c1 = a.Dir * hi;
+            r2 = SegmentSegmentCore(c0, c1, q0, q1, out double sc, out t, out inRange);
+            s = sc <= 0.5 ? lo + (hi - lo) * sc : hi - (hi - lo) * (1 - sc);
+            v = (q0 - c0) - ((c1 - c0) * sc - (q1 - q0) * t);
+            return r2;
+        }
+
+        /// <summary>
+        /// A linear component a, thickened by ra when it is a capsule's axis, against the capsule (or, for rb = 0 and
+        /// !<paramref name="solid"/>, the segment) [b0, b1] of radius rb. 3D, or 2D separated: the axes' distance less
+        /// ra + rb, the witnesses pushed along the unit residual; axes that meet push along the common normal dA × dB, or
+        /// for parallel axes along <see cref="AnyPerpendicular"/> of A's direction (a zero-length axis: of B's). 2D
+        /// <paramref name="planar"/> solids whose axes cross: the Minkowski difference of the axes has an interior, and its
+        /// depth (<see cref="Separation2"/>) adds to the radii.
+        /// </summary>
+        public static DistanceResult3 LinearCapsule(in Linear a, double ra, Vector3D b0, Vector3D b1, double rb, bool planar, bool solid, out bool inRange)
+        {
+            double r2 = LinearSegment(a, b0, b1, out double s, out double t, out var v, out inRange);
+            s += 0; t += 0; // −0 + 0 = 0
+            var pa = a.PointAt(s);
+            var pb = SegmentPoint(b0, b1, t);
+            if (!solid) return new DistanceResult3(Math.Sqrt(r2), r2, pa, pb, s, t);
+
+            double r = ra + rb, dist = Math.Sqrt(r2);
+            inRange &= r <= double.MaxValue;
+            Vector3D n;
+            if (planar)
+            {
+                var b = Linear.Segment(b0, b1);
+                double g = Separation2(a, b, out var axis);
+                if (g < 0) return Crossing2(a, ra, b, rb, g, axis);
+                // Touching axes have no residual: the separating axis orients the push (A lies on its + side).
+                n = v != default ? v * (1 / v.Length) : (axis != default ? -axis : Vector3D.UnitX);
+            }
+            else if (v != default) n = v * (1 / v.Length);
+            else
+            {
+                var dB = b1 - b0;
+                var c = Vector3D.Cross(a.Dir, dB);
+                n = c != default ? c * (1 / c.Length) : AnyPerpendicular(a.Dir != default ? a.Dir : dB);
+            }
+            double d = dist - r;
+            return new DistanceResult3(d, d > 0 ? d * d : 0, pa + n * ra, pb - n * rb, s, t);
+        }
+
+        /// <summary>
+        /// The crossing depth case of 2D capsules: the axes' Minkowski difference holds the origin at depth −g below the
+        /// face of <paramref name="axis"/> (unit, A on its + side), so A moves by (−g + ra + rb)·axis. The axis point of
+        /// the shape whose extent along the axis is an endpoint (that endpoint) is paired with its image across the depth
+        /// on the other axis.
+        /// </summary>
+        private static DistanceResult3 Crossing2(in Linear a, double ra, in Linear b, double rb, double g, Vector3D axis)
+        {
+            double kA = Vector3D.Dot(a.Dir, axis), kB = Vector3D.Dot(b.Dir, axis);
+            double s, t;
+            Vector3D pa, pb;
+            if (kA != 0)
+            {
+                s = kA > 0 ? a.Lo : a.Hi;
+                pa = a.PointAt(s);
+                pb = pa - axis * g;
+                t = Project(b, pb - b.Start);
+            }
+            else
+            {
+                t = kB > 0 ? b.Hi : b.Lo;
+                pb = b.PointAt(t);
+                pa = pb + axis * g;
+                s = Project(a, pa - a.Start);
+            }
+            double d = g - (ra + rb);
+            return new DistanceResult3(d, 0, pa - axis * ra, pb + axis * rb, s, t);
+        }
+
+        /// <summary>The parameter of the point of a nearest to a.Start + q, within a's range.</summary>
+        private static double Project(in Linear a, Vector3D q)
+        {
+            double dd = a.Dir.LengthSquared;
+            return dd == 0 ? 0 : Num.Clamp(Vector3D.Dot(q, a.Dir) / dd, a.Lo, a.Hi);
+        }
+
+        /// <summary>
+        /// 2D separation of two linear components: the largest gap between their extents over the axes normal to and
+        /// along each direction (Gottschalk's separating-axis test on the Minkowski difference A − B, whose faces are
+        /// normal to the directions; the along-axes only tighten it where the difference is a thin sliver). Negative
+        /// exactly when the origin is inside A − B, and then −(its depth), the distance to the nearest face: the 2D
+        /// crossing depth. <paramref name="axis"/> is the unit axis of the largest gap, oriented with A on its + side
+        /// (zero when no direction is non-zero; the result is then +∞). Extents are measured from A's start, so a common
+        /// translation costs nothing. Ties go to the earlier axis.
+        /// </summary>
+        public static double Separation2(in Linear a, in Linear b, out Vector3D axis)
+        {
+            double g = double.PositiveInfinity;
+            axis = default;
+            var w = b.Start - a.Start;
+            var da = a.Dir;
+            var db = b.Dir;
+            double la = Math.Sqrt(da.X * da.X + da.Y * da.Y), lb = Math.Sqrt(db.X * db.X + db.Y * db.Y);
+            bool first = true;
+            if (la > 0)
+            {
+                Gap(new Vector3D(-da.Y / la, da.X / la, 0), a, b, w, ref g, ref axis, ref first);
+                Gap(new Vector3D(da.X / la, da.Y / la, 0), a, b, w, ref g, ref axis, ref first);
+            }
+            if (lb > 0)
+            {
+                Gap(new Vector3D(-db.Y / lb, db.X / lb, 0), a, b, w, ref g, ref axis, ref first);
+                Gap(new Vector3D(db.X / lb, db.Y / lb, 0), a, b, w, ref g, ref axis, ref first);
+            }
+            return g;
+        }
+
+        private static void Gap(Vector3D e, in Linear a, in Linear b, Vector3D w, ref double g, ref Vector3D axis, ref bool first)
+        {
+            Extent(0, Vector3D.Dot(a.Dir, e), a.Lo, a.Hi, out double loA, out double hiA);
+            Extent(Vector3D.Dot(w, e), Vector3D.Dot(b.Dir, e), b.Lo, b.Hi, out double loB, out double hiB);
+            double up = loA - hiB, down = loB - hiA;
+            if (first || up > g) { g = up; axis = e; first = false; }
+            if (down > g) { g = down; axis = -e; }
+        }
+
+        /// <summary>The extent c + [lo, hi]·k of a component along an axis (k its direction's component; ±∞ for unbounded ends).</summary>
+        private static void Extent(double c, double k, double lo, double hi, out double min, out double max)
+        {
+            if (k > 0) { min = c + lo * k; max = c + hi * k; }
+            else if (k < 0) { min = c + hi * k; max = c + lo * k; }
+            else { min = c; max = c; }
+        }
+
+        /// <summary>
+        /// a × b for unit-scale vectors with each component a·b − c·d formed from exact products (Dekker's split; no
+        /// fused multiply–add in netstandard2.1): relative error about u per component even when the directions are
+        /// nearly parallel and the plain products cancel.
+        /// </summary>
+        public static Vector3D AccurateCross(Vector3D a, Vector3D b) =>
+            new Vector3D(DiffOfProducts(a.Y, b.Z, a.Z, b.Y), DiffOfProducts(a.Z, b.X, a.X, b.Z), DiffOfProducts(a.X, b.Y, a.Y, b.X));
+
+        private static double DiffOfProducts(double a, double b, double c, double d)
+        {
+            double p = a * b, q = c * d;
+            return (p - q) + (ProductError(a, b, p) - ProductError(c, d, q));
+        }
+
+        /// <summary>The exact a·b − p for p = fl(a·b) (Dekker, TwoProduct), for |a|, |b| ≤ 1.</summary>
+        private static double ProductError(double a, double b, double p)
+        {
+            const double Splitter = 134217729.0; // 2^27 + 1
+            double ca = Splitter * a, ah = ca - (ca - a), al = a - ah;
+            double cb = Splitter * b, bh = cb - (cb - b), bl = b - bh;
+            return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+        }
+
+        /// <summary>A power of two k with k·m in [1, 2), for a normal m &gt; 0.</summary>
+        private static double InverseMagnitude(double m)
+        {
+            long exponent = ((BitConverter.DoubleToInt64Bits(m) >> 52) & 0x7FF) - 1023;
+            return BitConverter.Int64BitsToDouble((1023 - exponent) << 52);
+        }
+        /// <summary><see cref="Unbounded"/> as a result: the witnesses Origin + t·Direction of each shape.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static DistanceResult3 UnboundedPair(Vector3D oA, Vector3D dA, bool rayA, Vector3D oB, Vector3D dB, bool rayB, out bool inRange)
+        {
+            double r2 = Unbounded(oA, dA, rayA, oB, dB, rayB, out double s, out double t, out inRange);
+            s += 0; t += 0; // −0 + 0 = 0
+            return new DistanceResult3(Math.Sqrt(r2), r2, oA + dA * s, oB + dB * t, s, t);
+        }
+
+        /// <summary>
+        /// Whether the line or ray meets the closed ball: the squared residual of <see cref="PointLinear"/> against r².
+        /// <paramref name="inRange"/>: either square in the fast range (as <see cref="WithinRadius"/>) and no overflowed
+        /// difference.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool LinearInBall(Vector3D center, Vector3D o, Vector3D d, bool ray, double radius, out bool inRange)
+        {
+            var w = center - o;
+            double t = Vector3D.Dot(w, d);
+            if (ray && t <= 0) t = 0;
+            double r2 = (t == 0 ? w : w - d * t).LengthSquared;
+            bool inside = WithinRadius(r2, radius, out inRange);
+            inRange &= !double.IsNaN(r2);
+            return inside;
+        }
+
+        /// <summary>Whether the capsule axis [b0, b1] comes within r (the sum of the radii) of c; <paramref name="inRange"/> as for <see cref="SegmentInSphere"/>, and the sum finite.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool CapsuleTouchesBall(Vector3D b0, Vector3D b1, Vector3D c, double r, out bool inRange)
+        {
+            bool inside = SegmentInSphere(b0, b1, c, r, out inRange);
+            inRange &= r <= double.MaxValue;
+            return inside;
+        }
+
+        /// <summary>Whether capsule b comes strictly before capsule a: by axis (<see cref="Order.Swap(Vector3D, Vector3D, Vector3D, Vector3D)"/>), equal axes by radius.</summary>
+        public static bool SwapCapsules(Vector3D a0, Vector3D a1, double ra, Vector3D b0, Vector3D b1, double rb) =>
+            a0 == b0 && a1 == b1 ? ra > rb : Order.Swap(a0, a1, b0, b1);
+    }
+}

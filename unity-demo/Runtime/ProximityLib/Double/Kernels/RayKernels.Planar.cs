@@ -1,0 +1,134 @@
+// Copied from src/ProximityLib/Double/Kernels/RayKernels.Planar.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System;
+using System.Runtime.CompilerServices;
+
+namespace ProximityLib.Double
+{
+    // 2D ray casts that need 2D-only logic: in the plane a segment, line or ray is crossed, and a triangle is a solid.
+    internal static partial class Kernels
+    {
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double MaxAbs(Vector2D v) => Math.Max(Math.Abs(v.X), Math.Abs(v.Y));
+
+        /// <summary>The unit normal of direction e (non-zero) on the side the ray d comes from (−(e's left normal) when d runs along it to the left).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector2D Facing(Vector2D e, Vector2D d)
+        {
+            var n = Vector2D.From3(Unit(new Vector3D(-e.Y, e.X, 0), default));
+            return Vector2D.Dot(n, d) > 0 ? -n : n;
+        }
+
+        /// <summary>
+        /// Ray against a 2D segment [p, q], crossed as a wall. Each endpoint's side of the ray, f = d × (x − o), is a
+        /// value of that endpoint alone, so segments sharing an endpoint agree on it: a ray through a polyline's vertex
+        /// hits at least one of its segments. The crossing is the convex combination (g_p·f_q − g_q·f_p)/(f_q − f_p) of
+        /// the endpoints' distances g along the ray, with weights of one sign (no cancellation). A ray along the segment
+        /// hits its nearer end (T = 0 when the origin lies on it) with normal −d.
+        /// </summary>
+        public static RayHit2 RaySegment2(Vector2D o, Vector2D d, Vector2D p, Vector2D q, out bool inRange)
+        {
+            var wp = p - o;
+            var wq = q - o;
+            inRange = Range.Box(Math.Max(MaxAbs(wp), MaxAbs(wq)));
+            if (p == q)
+            {
+                var h = RayPoint(o.To3(), d.To3(), p.To3(), out _);
+                return h.To2();
+            }
+            double fp = Vector2D.Cross(d, wp), fq = Vector2D.Cross(d, wq);
+            if ((fp > 0 && fq > 0) || (fp < 0 && fq < 0)) return RayHit2.Miss;
+            double gp = Vector2D.Dot(d, wp), gq = Vector2D.Dot(d, wq);
+            if (fp == fq)
+            {
+                // Both on the ray's line: the ray runs along the segment.
+                if (gp < 0 && gq < 0) return RayHit2.Miss;
+                if (gp <= 0 || gq <= 0) return new RayHit2(0, o, -d, false);
+                return gp <= gq ? new RayHit2(gp, p, -d, false) : new RayHit2(gq, q, -d, false);
+            }
+            var e = q - p;
+            // The origin on the segment is a hit at 0 however the crossing's rounding falls.
+            if (Vector2D.Cross(wp, wq) == 0 && Vector2D.Dot(wp, wq) <= 0) return new RayHit2(0, o, Facing(e, d), false);
+            double t = (gp * fq - gq * fp) / (fq - fp);
+            if (!(t >= 0)) return RayHit2.Miss;
+            double s = fp / (fp - fq);
+            var point = s <= 0.5 ? p + e * s : q - e * (1 - s);
+            return new RayHit2(t + 0.0, point, Facing(e, d), false);
+        }
+
+        /// <summary>
+        /// Ray against a 2D line (p, unit e; <paramref name="half"/>: only s ≥ 0, a ray): crossed where d × (p + s·e − o)
+        /// = 0, at T = ((p − o) × e)/(d × e). Parallel: T = 0 when the origin lies on it (a ray target: at its origin when
+        /// that lies ahead on the ray's line), else a miss.
+        /// </summary>
+        public static RayHit2 RayLine2(Vector2D o, Vector2D d, Vector2D p, Vector2D e, bool half, out bool inRange)
+        {
+            var w = p - o;
+            inRange = Range.Box(MaxAbs(w));
+            double fp = Vector2D.Cross(d, w), fe = Vector2D.Cross(d, e);
+            if (fe == 0)
+            {
+                if (fp != 0) return RayHit2.Miss;
+                double g = Vector2D.Dot(d, w);
+                if (!half || (Vector2D.Dot(d, e) > 0 ? g <= 0 : g >= 0)) return new RayHit2(0, o, -d, false);
+                return Vector2D.Dot(d, e) > 0 ? new RayHit2(g, p, -d, false) : RayHit2.Miss;
+            }
+            double s = -fp / fe;
+            if (half && !(s >= 0)) return RayHit2.Miss;
+            double t = Vector2D.Cross(w, e) / fe;
+            if (!(t >= 0)) return RayHit2.Miss;
+            return new RayHit2(t + 0.0, p + e * s, Facing(e, d), false);
+        }
+
+        /// <summary>
+        /// Ray against a closed solid 2D triangle: the ray clipped by the three edges' inner sides (Cyrus–Beck), each side
+        /// function cross(Q − P, x − P) formed from differences. The origin on the boundary is a hit at 0 with the first
+        /// such edge's outward normal (A→B, B→C, C→A of the counter-clockwise order). A degenerate triangle is the segment
+        /// or point it is.
+        /// </summary>
+        public static RayHit2 RayTriangle2(Vector2D o, Vector2D d, Vector2D a, Vector2D b, Vector2D c, out bool inRange)
+        {
+            var wa = a - o;
+            var wb = b - o;
+            var wc = c - o;
+            inRange = Range.Box(Math.Max(MaxAbs(wa), Math.Max(MaxAbs(wb), MaxAbs(wc))));
+            double area = Vector2D.Cross(b - a, c - a);
+            if (area == 0)
+            {
+                // Collinear: the segment between the two vertices farthest apart.
+                double ab = (b - a).LengthSquared, bc = (c - b).LengthSquared, ca = (a - c).LengthSquared;
+                return ab >= bc && ab >= ca ? RaySegment2(o, d, a, b, out _) : bc >= ca ? RaySegment2(o, d, b, c, out _) : RaySegment2(o, d, c, a, out _);
+            }
+            if (area < 0) { var swap = b; b = c; c = swap; swap = wb; wb = wc; wc = swap; }
+            var eab = b - a;
+            var ebc = c - b;
+            var eca = a - c;
+            // Side of the origin for each edge: positive inside.
+            double fab = Vector2D.Cross(eab, -wa), fbc = Vector2D.Cross(ebc, -wb), fca = Vector2D.Cross(eca, -wc);
+            if (fab > 0 && fbc > 0 && fca > 0) return RayHit2.Inside(o);
+            if (fab >= 0 && fbc >= 0 && fca >= 0)
+                return new RayHit2(0, o, Outward(fab == 0 ? eab : fbc == 0 ? ebc : eca), false);
+            double enter = double.NegativeInfinity, exit = double.PositiveInfinity;
+            var entry = eab;
+            if (!Clip(fab, Vector2D.Cross(eab, d), eab, ref enter, ref exit, ref entry)
+                || !Clip(fbc, Vector2D.Cross(ebc, d), ebc, ref enter, ref exit, ref entry)
+                || !Clip(fca, Vector2D.Cross(eca, d), eca, ref enter, ref exit, ref entry)
+                || !(enter <= exit) || !(enter >= 0))
+                return RayHit2.Miss;
+            return new RayHit2(enter, o + d * enter, Outward(entry), false);
+        }
+
+        /// <summary>The outward unit normal of a counter-clockwise edge e (its right-hand side).</summary>
+        private static Vector2D Outward(Vector2D e) => Vector2D.From3(Unit(new Vector3D(e.Y, -e.X, 0), default));
+
+        /// <summary>One edge's clip of the ray: f0 + t·rate ≥ 0. False when the edge rejects the whole ray.</summary>
+        private static bool Clip(double f0, double rate, Vector2D edge, ref double enter, ref double exit, ref Vector2D entry)
+        {
+            if (rate == 0) return f0 >= 0;
+            double t = -f0 / rate;
+            if (rate > 0) { if (t > enter) { enter = t; entry = edge; } }
+            else if (t < exit) exit = t;
+            return true;
+        }
+    }
+}

@@ -1,0 +1,263 @@
+// Copied from src/ProximityLib/Double/Kernels/RayKernels.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System;
+using System.Runtime.CompilerServices;
+
+namespace ProximityLib.Double
+{
+    // Ray casts (src/ProximityLib/Raycasts). Every kernel works on differences from the ray's origin (or the shape's own
+    // stored point), so a common translation adds no error, and is homogeneous in lengths (the direction is a unit
+    // vector, no absolute constants), so 2^k-scaled inputs give 2^k-scaled answers. inRange: the largest relative
+    // magnitude lies where the squares (triangles: fourth powers) the kernel forms stay far from underflow and overflow.
+    internal static partial class Kernels
+    {
+        /// <summary>2^-40: a point or segment (3D) is hit when the ray passes within this much of the local scale of it.</summary>
+        public const double PassThrough = 9.094947017729282e-13;
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector3D Unit(Vector3D v, Vector3D fallback)
+        {
+            double m = Range.MaxAbs(v);
+            if (m == 0) return fallback;
+            v *= Num.InversePowerOfTwo(m); // exact; |v|² then neither overflows nor underflows
+            return v / v.Length;
+        }
+
+        /// <summary>
+        /// Ray against a closed ball. The perpendicular distance h of the center from the line gives the half-chord
+        /// √((r − h)(r + h)) without the cancellation of b² − c, and the entry is (|w|² − r²)/(−b + half-chord), the
+        /// root of the quadratic that does not cancel (Press et al., Numerical Recipes §5.6).
+        /// </summary>
+        public static RayHit3 RaySphere(Vector3D o, Vector3D d, Vector3D center, double r, out bool inRange)
+        {
+            var w = o - center;
+            inRange = Range.Box(Math.Max(Range.MaxAbs(w), r));
+            double wl = w.Length;
+            if (wl <= r) return wl < r ? RayHit3.Inside(o) : new RayHit3(0, o, Unit(w, -d), false);
+            double b = Vector3D.Dot(w, d);
+            if (!(b < 0)) return RayHit3.Miss; // outside and not approaching the center: never enters a ball
+            double h = (w - d * b).Length;
+            if (!(h <= r)) return RayHit3.Miss;
+            double t = (wl - r) * (wl + r) / (Math.Sqrt((r - h) * (r + h)) - b);
+            return new RayHit3(t, o + d * t, Unit(w + d * t, -d), false);
+        }
+
+        /// <summary>
+        /// Ray against a closed capsule: the origin inside (point–segment distance), else the earliest of the two end
+        /// balls and the side of the cylinder where the hit's axis parameter lies in [0, 1] (the capsule is their union,
+        /// and a flat cap's points lie in a ball, so the first entry into the union is the first of these).
+        /// </summary>
+        public static RayHit3 RayCapsule(Vector3D o, Vector3D d, Vector3D a, Vector3D b, double r, out bool inRange)
+        {
+            var w = o - a;
+            var e = b - a;
+            inRange = Range.Box(Math.Max(Math.Max(Range.MaxAbs(w), Range.MaxAbs(e)), r));
+            var res = PointSegmentResidual(o, a, b, out _, out double ee);
+            double rl = res.Length;
+            if (rl <= r) return rl < r ? RayHit3.Inside(o) : new RayHit3(0, o, Unit(res, -d), false);
+            var best = RaySphere(o, d, a, r, out _);
+            var other = RaySphere(o, d, b, r, out _);
+            if (other.T < best.T) best = other;
+            if (ee > 0)
+            {
+                // The cylinder's side in the plane across the axis: the 2D ray–circle problem of the sphere above.
+                double dp = Vector3D.Dot(d, e) / ee, wp = Vector3D.Dot(w, e) / ee;
+                var dn = d - e * dp;
+                var wn = w - e * wp;
+                double aa = dn.LengthSquared, bq = Vector3D.Dot(wn, dn), wl = wn.Length;
+                if (aa > 0 && bq < 0 && wl > r)
+                {
+                    double h = (wn - dn * (bq / aa)).Length;
+                    if (h <= r)
+                    {
+                        double t = (wl - r) * (wl + r) / (Math.Sqrt(aa) * Math.Sqrt((r - h) * (r + h)) - bq);
+                        double u = wp + dp * t;
+                        if (u >= 0 && u <= 1 && t < best.T) best = new RayHit3(t, o + d * t, Unit(wn + dn * t, -d), false);
+                    }
+                }
+            }
+            return best;
+        }
+
+        /// <summary>Ray against a closed half-space {x : n·(x − p) ≤ 0}: from the origin's signed distance and the approach rate −n·d.</summary>
+        public static RayHit3 RayHalfSpace(Vector3D o, Vector3D d, Vector3D n, Vector3D p, out bool inRange)
+        {
+            var w = o - p;
+            inRange = Range.Box(Range.MaxAbs(w));
+            double s = Vector3D.Dot(n, w);
+            if (s <= 0) return s < 0 ? RayHit3.Inside(o) : new RayHit3(0, o, n, false);
+            double rate = -Vector3D.Dot(n, d);
+            if (!(rate > 0)) return RayHit3.Miss;
+            double t = s / rate; // may exceed the double range at grazing angles: the public Cast turns that into a miss
+            return new RayHit3(t, o + d * t, n, false);
+        }
+
+        /// <summary>
+        /// Ray against a closed box (slab test, Kay and Kajiya 1986) in the box's frame. An axis the ray does not move
+        /// along is a containment test, never a division by zero; the other axes divide a finite difference by a non-zero
+        /// component, so no 0·∞ or NaN. The entry axis (the first of equal ones) gives the normal; the point is snapped
+        /// onto the entry face and clamped into the box. Planar boxes (2D) skip z.
+        /// </summary>
+        public static RayHit3 RayBox(Vector3D o, Vector3D d, in Box box, out bool inRange)
+        {
+            var w = o - box.Origin;
+            inRange = Range.Box(Math.Max(Range.MaxAbs(w), Math.Max(Range.MaxAbs(box.Lo), Range.MaxAbs(box.Hi))));
+            var p = box.ToLocal(w);
+            var v = box.ToLocal(d);
+            int axes = box.Planar ? 2 : 3;
+            bool open = true, closed = true;
+            for (int i = 0; i < axes; i++)
+            {
+                double x = Vec.Get(p, i), lo = Vec.Get(box.Lo, i), hi = Vec.Get(box.Hi, i);
+                open &= x > lo && x < hi;
+                closed &= x >= lo && x <= hi;
+            }
+            if (open) return RayHit3.Inside(o);
+            if (closed)
+            {
+                // On the surface: the first axis whose coordinate sits on a face; a flat axis faces the ray.
+                for (int i = 0; ; i++)
+                {
+                    double x = Vec.Get(p, i), lo = Vec.Get(box.Lo, i), hi = Vec.Get(box.Hi, i);
+                    if (x != lo && x != hi) continue;
+                    bool up = lo == hi ? Vec.Get(v, i) < 0 : x == hi;
+                    return new RayHit3(0, o, up ? box.Axis(i) : -box.Axis(i), false);
+                }
+            }
+            double enter = double.NegativeInfinity, exit = double.PositiveInfinity;
+            int axis = 0;
+            for (int i = 0; i < axes; i++)
+            {
+                double x = Vec.Get(p, i), vi = Vec.Get(v, i), lo = Vec.Get(box.Lo, i), hi = Vec.Get(box.Hi, i);
+                if (vi == 0)
+                {
+                    if (x < lo || x > hi) return RayHit3.Miss;
+                    continue;
+                }
+                double t1 = (lo - x) / vi, t2 = (hi - x) / vi;
+                double near = vi > 0 ? t1 : t2, far = vi > 0 ? t2 : t1;
+                if (near > enter) { enter = near; axis = i; }
+                if (far < exit) exit = far;
+            }
+            if (!(enter <= exit) || !(enter >= 0)) return RayHit3.Miss;
+            double va = Vec.Get(v, axis);
+            var q = p + v * enter;
+            q = new Vector3D(Num.Clamp(q.X, box.Lo.X, box.Hi.X), Num.Clamp(q.Y, box.Lo.Y, box.Hi.Y), Num.Clamp(q.Z, box.Lo.Z, box.Hi.Z));
+            q = Vec.With(q, axis, va > 0 ? Vec.Get(box.Lo, axis) : Vec.Get(box.Hi, axis));
+            return new RayHit3(enter, box.Origin + box.ToWorldOffset(q), va > 0 ? -box.Axis(axis) : box.Axis(axis), false);
+        }
+
+        /// <summary>
+        /// Ray against a point (zero thickness): hit when the point lies within <see cref="PassThrough"/>·|p − o|∞ of the
+        /// ray; T is its distance along the ray, Point the point itself, Normal −d.
+        /// </summary>
+        public static RayHit3 RayPoint(Vector3D o, Vector3D d, Vector3D p, out bool inRange)
+        {
+            var w = p - o;
+            double m = Range.MaxAbs(w);
+            inRange = Range.Box(m);
+            return PassesThrough(w, d, m, out double t) ? new RayHit3(t, p, -d, false) : RayHit3.Miss;
+        }
+
+        /// <summary>Whether the offset w from the origin lies on the ray within the tolerance tol·m; t its distance along d (≥ 0).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool PassesThrough(Vector3D w, Vector3D d, double m, out double t)
+        {
+            t = Vector3D.Dot(w, d);
+            double tol = PassThrough * m;
+            bool hit = t >= -tol && (w - d * t).Length <= tol;
+            t = t > 0 ? t : 0;
+            return hit;
+        }
+
+        /// <summary>
+        /// Ray against a segment (3D, zero thickness): hit when the ray passes within <see cref="PassThrough"/> of the
+        /// local scale (the larger endpoint offset from the origin) of it. The earliest of: the origin on the segment
+        /// (T = 0), an endpoint on the ray, and the lines' closest approach inside both (parameters from the cross
+        /// products (w × d)·(e × d) / |e × d|², Lagrange's identity, no cancellation of the normal equations).
+        /// </summary>
+        public static RayHit3 RaySegment(Vector3D o, Vector3D d, Vector3D a, Vector3D b, out bool inRange)
+        {
+            var wa = a - o;
+            var wb = b - o;
+            double m = Math.Max(Range.MaxAbs(wa), Range.MaxAbs(wb));
+            inRange = Range.Box(m);
+            double tol = PassThrough * m;
+            var res = PointSegmentResidual(o, a, b, out double u);
+            if (res.Length <= tol) return new RayHit3(0, SegmentPoint(a, b, u), -d, false);
+            var best = RayHit3.Miss;
+            if (PassesThrough(wa, d, m, out double ta)) best = new RayHit3(ta, a, -d, false);
+            if (PassesThrough(wb, d, m, out double tb) && tb < best.T) best = new RayHit3(tb, b, -d, false);
+            var e = b - a;
+            var ed = Vector3D.Cross(e, d);
+            double den = ed.LengthSquared;
+            if (den > 0)
+            {
+                double s = -Vector3D.Dot(Vector3D.Cross(wa, d), ed) / den;
+                if (s > 0 && s < 1)
+                {
+                    var w = s <= 0.5 ? wa + e * s : wb - e * (1 - s);
+                    if (PassesThrough(w, d, m, out double t) && t < best.T) best = new RayHit3(t, SegmentPoint(a, b, s), -d, false);
+                }
+            }
+            return best;
+        }
+
+        /// <summary>
+        /// Ray against a two-sided triangle, watertight (Woop, Benthin and Wald, "Watertight Ray/Triangle Intersection",
+        /// JCGT 2013): the vertices relative to the origin are sheared so the ray runs along the dominant axis, and the
+        /// edge functions are 2D cross products of per-vertex values, so a shared edge gives both triangles the same value
+        /// of opposite sign: a ray through it hits at least one. A zero determinant (the ray parallel to the plane, or a
+        /// degenerate triangle) answers the triangle as the segments it is seen as (<see cref="RayEdgeOn"/>).
+        /// </summary>
+        public static RayHit3 RayTriangle(Vector3D o, Vector3D d, Vector3D A, Vector3D B, Vector3D C, out bool inRange)
+        {
+            var a = A - o;
+            var b = B - o;
+            var c = C - o;
+            double m = Math.Max(Range.MaxAbs(a), Math.Max(Range.MaxAbs(b), Range.MaxAbs(c))), m2 = m * m;
+            inRange = Range.In(m2 * m2) || m == 0;
+            double adx = Math.Abs(d.X), ady = Math.Abs(d.Y), adz = Math.Abs(d.Z);
+            int kz = adx >= ady ? (adx >= adz ? 0 : 2) : (ady >= adz ? 1 : 2);
+            int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
+            double dz = Vec.Get(d, kz), sx = Vec.Get(d, kx) / dz, sy = Vec.Get(d, ky) / dz;
+            double az = Vec.Get(a, kz), bz = Vec.Get(b, kz), cz = Vec.Get(c, kz);
+            double ax = Vec.Get(a, kx) - sx * az, ay = Vec.Get(a, ky) - sy * az;
+            double bx = Vec.Get(b, kx) - sx * bz, by = Vec.Get(b, ky) - sy * bz;
+            double cx = Vec.Get(c, kx) - sx * cz, cy = Vec.Get(c, ky) - sy * cz;
+            double U = cx * by - cy * bx, V = ax * cy - ay * cx, W = bx * ay - by * ax;
+            double det = U + V + W;
+            if (det == 0) return RayEdgeOn(o, d, A, B, C, m);
+            if ((U < 0 || V < 0 || W < 0) && (U > 0 || V > 0 || W > 0)) return RayHit3.Miss;
+            double t = (U * az + V * bz + W * cz) / (det * dz);
+            if (!(t >= 0)) return RayHit3.Miss;
+            var n = Unit(Vector3D.Cross(B - A, C - A), -d);
+            return new RayHit3(t + 0.0, A + (B - A) * (V / det) + (C - A) * (W / det), Vector3D.Dot(n, d) > 0 ? -n : n, false);
+        }
+
+        /// <summary>
+        /// A triangle the ray sees edge-on (zero determinant): the origin inside it in its plane is a hit at T = 0 (normal:
+        /// the triangle's, (B − A) × (C − A) turned against the ray when it is not parallel); otherwise the earliest hit
+        /// of its three edges as segments (a degenerate triangle is the segment or point it is).
+        /// </summary>
+        private static RayHit3 RayEdgeOn(Vector3D o, Vector3D d, Vector3D A, Vector3D B, Vector3D C, double m)
+        {
+            var n = Vector3D.Cross(B - A, C - A);
+            if (n != default)
+            {
+                var u = Unit(n, -d);
+                var pa = A - o;
+                if (Math.Abs(Vector3D.Dot(u, pa)) <= PassThrough * m
+                    && Vector3D.Dot(Vector3D.Cross(B - A, o - A), n) >= 0
+                    && Vector3D.Dot(Vector3D.Cross(C - B, o - B), n) >= 0
+                    && Vector3D.Dot(Vector3D.Cross(A - C, o - C), n) >= 0)
+                    return new RayHit3(0, o, Vector3D.Dot(u, d) > 0 ? -u : u, false);
+            }
+            var best = RaySegment(o, d, A, B, out _);
+            var next = RaySegment(o, d, B, C, out _);
+            if (next.T < best.T) best = next;
+            next = RaySegment(o, d, C, A, out _);
+            return next.T < best.T ? next : best;
+        }
+    }
+}

@@ -1,0 +1,465 @@
+// Copied from src/ProximityLib/Double/Kernels/TriangleKernels.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System;
+using System.Runtime.CompilerServices;
+
+namespace ProximityLib.Double
+{
+    /// <summary>
+    /// A triangle prepared for the kernels, in a frame scaled by a power of two K (exact) chosen from the whole
+    /// configuration's size, so every product below stays far from overflow and underflow. N = E1 × E2 is formed with
+    /// exact products (<see cref="Kernels.AccurateCross"/>): its direction is then right to a few ulps of the rounded
+    /// edges even for a sliver, where the plain cross product's is off by u/sinθ (a height error of u·S/sinθ). Flat: the
+    /// sine of the angle at A is below 2^-52 (the triangle lies within 2u·S of its edges, which answer it exactly as
+    /// the segment or point it then is) or |N| is below 2^-300 of the configuration (it would have lost bits; the
+    /// triangle is then thinner than that).
+    /// </summary>
+    internal readonly struct TriFrame
+    {
+        /// <summary>The vertices, as given.</summary>
+        public readonly Vector3D A, B, C;
+        /// <summary>The scaled edges (B − A)·K, (C − A)·K, (C − B)·K and normal E1 × E2 (zero when flat).</summary>
+        public readonly Vector3D E1, E2, E3, N;
+        /// <summary>N / |N| (zero when flat).</summary>
+        public readonly Vector3D Unit;
+        public readonly double K;
+        public readonly bool Flat;
+
+        private const double Sliver2 = 4.930380657631324e-32;   // 2^-104: sin² of the angle at A
+        private const double Tiny2 = 2.409919865102884e-181;    // 2^-600: |N|² in the scaled frame
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public TriFrame(Vector3D a, Vector3D b, Vector3D c, double k)
+        {
+            A = a; B = b; C = c; K = k;
+            E1 = (b - a) * k;
+            E2 = (c - a) * k;
+            E3 = (c - b) * k;
+            var n = Kernels.AccurateCross(E1, E2);
+            double nn = n.LengthSquared;
+            Flat = !(nn >= Tiny2 && nn >= Sliver2 * (E1.LengthSquared * E2.LengthSquared));
+            N = Flat ? default : n;
+            Unit = Flat ? default : n / Math.Sqrt(nn);
+        }
+
+        /// <summary>Whether x projects into the closed triangle along N: on the inner side of every edge (not flat only).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public bool Inside(Vector3D x) =>
+            Vector3D.Dot(Vector3D.Cross(E1, (x - A) * K), N) >= 0
+            && Vector3D.Dot(Vector3D.Cross(E3, (x - B) * K), N) >= 0
+            && Vector3D.Dot(Vector3D.Cross((x - C) * K, E2), N) >= 0;
+
+        /// <summary>Edge i (0: A→B, 1: B→C, 2: C→A).</summary>
+        public void Edge(int i, out Vector3D from, out Vector3D to)
+        {
+            from = i == 0 ? A : (i == 1 ? B : C);
+            to = i == 0 ? B : (i == 1 ? C : A);
+        }
+
+        /// <summary>The squared size of a configuration made of this triangle and the points p, q (relative to A).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double Size2(Vector3D a, Vector3D b, Vector3D c, Vector3D p, Vector3D q) =>
+            (b - a).LengthSquared + (c - a).LengthSquared + (p - a).LengthSquared + (q - a).LengthSquared;
+    }
+
+    internal static partial class Kernels
+    {
+        // ---- Exact products (Dekker): the same bits on every runtime, no fused multiply-add needed ----
+
+        private const double Splitter = 134217729.0; // 2^27 + 1
+
+        /// <summary>The rounding error a·b − fl(a·b) exactly (Dekker's two-product; exact while nothing over- or underflows).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double ProductError(double a, double b, double p)
+        {
+            double ca = Splitter * a, ah = ca - (ca - a), al = a - ah;
+            double cb = Splitter * b, bh = cb - (cb - b), bl = b - bh;
+            return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+        }
+
+        /// <summary>
+        /// a·b − c·d to about one rounding of the result (Kahan's problem): the rounded products' difference is exact when
+        /// they cancel (Sterbenz), and their exact rounding errors are added back.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static double DiffOfProducts(double a, double b, double c, double d)
+        {
+            double p = a * b, q = c * d;
+            return (p - q) + (ProductError(a, b, p) - ProductError(c, d, q));
+        }
+
+        /// <summary>u × v with each component to about one rounding of itself (see <see cref="DiffOfProducts"/>).</summary>
+        internal static Vector3D AccurateCross(Vector3D u, Vector3D v) =>
+            new Vector3D(DiffOfProducts(u.Y, v.Z, u.Z, v.Y), DiffOfProducts(u.Z, v.X, u.X, v.Z), DiffOfProducts(u.X, v.Y, u.Y, v.X));
+
+        // ---- Point against triangle ----
+
+        /// <summary>
+        /// Point against a 3D triangle (not solid). Projecting into the triangle: the height over its plane, measured from
+        /// A along the accurate unit normal (so a sliver costs no accuracy). Otherwise, or flat: the nearest of the three
+        /// edges (every closest point outside the projection lies on the boundary), the first of equal ones.
+        /// <paramref name="fine"/>: the squared gap is in the fast range or exactly 0. The normal is the unit direction from
+        /// the triangle's point toward p; the plane normal (+N) for a point on a non-flat triangle.
+        /// </summary>
+        public static PointContact PointTriangle(Vector3D p, in TriFrame f, out bool fine)
+        {
+            if (!f.Flat && f.Inside(p))
+            {
+                double h = Vector3D.Dot((p - f.A) * f.K, f.Unit) / f.K;
+                double dist = Math.Abs(h), d2 = dist * dist;
+                fine = h == 0 || Range.In(d2);
+                return new PointContact(dist, d2, p - f.Unit * h, h < 0 ? -f.Unit : f.Unit, 0);
+            }
+            double g = NearestEdge(p, f, out int edge, out double t, out var r);
+            f.Edge(edge, out var v0, out var v1);
+            double len = Math.Sqrt(g);
+            fine = Range.Length2(r, g);
+            var normal = len > 0 ? SegmentNormal(r, g, len, v0, v1, t, (v1 - v0).LengthSquared) : (f.Flat ? AnyPerpendicular(v1 - v0) : f.Unit);
+            return new PointContact(len, g, SegmentPoint(v0, v1, t), normal, 0);
+        }
+
+        /// <summary>The squared distance from p to the nearest edge of the triangle (the first of equal ones), its index, parameter and residual.</summary>
+        private static double NearestEdge(Vector3D p, in TriFrame f, out int edge, out double t, out Vector3D r)
+        {
+            r = PointSegmentResidual(p, f.A, f.B, out t);
+            double best = r.LengthSquared;
+            edge = 0;
+            var r1 = PointSegmentResidual(p, f.B, f.C, out double t1);
+            double g = r1.LengthSquared;
+            if (g < best) { best = g; edge = 1; r = r1; t = t1; }
+            r1 = PointSegmentResidual(p, f.C, f.A, out t1);
+            g = r1.LengthSquared;
+            if (g < best) { best = g; edge = 2; r = r1; t = t1; }
+            return best;
+        }
+
+        /// <summary>Point against a 3D triangle; <paramref name="inRange"/>: the configuration's squared size and the squared gap are in the fast range.</summary>
+        public static PointContact PointTriangle(Vector3D p, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
+        {
+            double size2 = TriFrame.Size2(a, b, c, p, p);
+            var r = PointTriangle(p, new TriFrame(a, b, c, InverseSizeScale(size2)), out bool fine);
+            inRange = fine & (Range.In(size2) | (a == b & a == c & a == p));
+            return r;
+        }
+
+        /// <summary>
+        /// Whether p lies on a 3D triangle: the decision of <see cref="PointTriangle(Vector3D, in TriFrame, out bool)"/>
+        /// with its height or edge residual exactly zero (no underflowed square decides it).
+        /// </summary>
+        public static bool PointOnTriangle(Vector3D p, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
+        {
+            double size2 = TriFrame.Size2(a, b, c, p, p);
+            var f = new TriFrame(a, b, c, InverseSizeScale(size2));
+            inRange = Range.In(size2) | (a == b & a == c & a == p);
+            if (!f.Flat && f.Inside(p)) return Vector3D.Dot((p - f.A) * f.K, f.Unit) == 0;
+            NearestEdge(p, f, out _, out _, out var r);
+            return r == default;
+        }
+
+        /// <summary>
+        /// Point against a solid 2D triangle (z = 0). Inside or on the boundary (on the inner side of every edge, the
+        /// triangle not flat): minus the distance to the nearest edge, the normal that edge's outward normal. Outside, or
+        /// flat (no interior: the segment or point it is): the nearest edge.
+        /// </summary>
+        public static PointContact PointTriangle2(Vector3D p, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
+        {
+            double size2 = TriFrame.Size2(a, b, c, p, p);
+            double k = InverseSizeScale(size2);
+            var f = new TriFrame(a, b, c, k);
+            double g = NearestEdge(p, f, out int edge, out double t, out var r);
+            f.Edge(edge, out var v0, out var v1);
+            double len = Math.Sqrt(g);
+            inRange = Range.Length2(r, g) & (Range.In(size2) | (a == b & a == c & a == p));
+            double area = Area2(f);
+            if (area != 0 && Inside2(p, f, area))
+            {
+                return new PointContact(len > 0 ? -len : 0, 0, SegmentPoint(v0, v1, t), Outward2(v1 - v0, area), 0);
+            }
+            var normal = len > 0 ? SegmentNormal(r, g, len, v0, v1, t, (v1 - v0).LengthSquared) : (area != 0 ? Outward2(v1 - v0, area) : AnyPerpendicular(v1 - v0));
+            return new PointContact(len, g, SegmentPoint(v0, v1, t), normal, 0);
+        }
+
+        /// <summary>Twice the signed area of a 2D triangle (its scaled z-normal), to about one rounding: its sign is the orientation.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Area2(in TriFrame f) => DiffOfProducts(f.E1.X, f.E2.Y, f.E1.Y, f.E2.X);
+
+        /// <summary>Whether the 2D point x lies on the inner side of (or on) every edge of the triangle of orientation <paramref name="area"/>.</summary>
+        private static bool Inside2(Vector3D x, in TriFrame f, double area)
+        {
+            var w0 = (x - f.A) * f.K;
+            var w1 = (x - f.B) * f.K;
+            var w2 = (x - f.C) * f.K;
+            double s0 = f.E1.X * w0.Y - f.E1.Y * w0.X;
+            double s1 = f.E3.X * w1.Y - f.E3.Y * w1.X;
+            double s2 = w2.X * f.E2.Y - w2.Y * f.E2.X;
+            return area > 0 ? (s0 >= 0 && s1 >= 0 && s2 >= 0) : (s0 <= 0 && s1 <= 0 && s2 <= 0);
+        }
+
+        /// <summary>The outward unit normal of a 2D edge with direction e of a triangle of orientation <paramref name="area"/>.</summary>
+        private static Vector3D Outward2(Vector3D e, double area)
+        {
+            var n = area > 0 ? new Vector3D(e.Y, -e.X, 0) : new Vector3D(-e.Y, e.X, 0);
+            double m = Range.MaxAbs(n);
+            if (m == 0) return Vector3D.UnitX;
+            n *= Num.InversePowerOfTwo(m);
+            return n / n.Length;
+        }
+
+        // ---- Segment against triangle ----
+
+        /// <summary>
+        /// Squared distance between segment [p0, p1] and a 3D triangle (neither solid), the segment's parameter and a
+        /// closest pair. Crossing the plane (heights of opposite signs along N) at a point that projects into the
+        /// triangle: 0 there. Otherwise the least of the endpoints against the triangle and the segment against the three
+        /// edges (every other closest pair has one of these forms), the first of equal ones in that order; a segment in
+        /// the plane, parallel to it or nearly so, is one of these cases too, so no ill-conditioned crossing is trusted.
+        /// </summary>
+        public static double SegmentTriangle(Vector3D p0, Vector3D p1, in TriFrame f, out double s, out Vector3D onSeg, out Vector3D onTri)
+        {
+            if (!f.Flat)
+            {
+                double h0 = Vector3D.Dot((p0 - f.A) * f.K, f.N), h1 = Vector3D.Dot((p1 - f.A) * f.K, f.N);
+                if (h0 != h1 && (h0 <= 0 ? h1 >= 0 : h1 <= 0))
+                {
+                    double t = h0 / (h0 - h1);
+                    var x = SegmentPoint(p0, p1, t);
+                    if (f.Inside(x)) { s = t; onSeg = onTri = x; return 0; }
+                }
+            }
+            var c = PointTriangle(p0, f, out _);
+            double best = c.DistanceSquared;
+            s = 0; onSeg = p0; onTri = c.Closest;
+            if (best == 0) return 0;
+            c = PointTriangle(p1, f, out _);
+            if (c.DistanceSquared < best) { best = c.DistanceSquared; s = 1; onSeg = p1; onTri = c.Closest; }
+            for (int i = 0; i < 3 && best > 0; i++)
+            {
+                f.Edge(i, out var v0, out var v1);
+                double g = SegmentSegmentCore(p0, p1, v0, v1, out double se, out double te, out _);
+                if (g < best) { best = g; s = se + 0; onSeg = SegmentPoint(p0, p1, se); onTri = SegmentPoint(v0, v1, te); }
+            }
+            return best;
+        }
+
+        /// <summary>Segment against a 3D triangle as a result; <paramref name="inRange"/>: the configuration's squared size and the squared distance are in the fast range (or exactly 0).</summary>
+        public static DistanceResult3 SegmentTriangle(Vector3D p0, Vector3D p1, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
+        {
+            double size2 = TriFrame.Size2(a, b, c, p0, p1);
+            var f = new TriFrame(a, b, c, InverseSizeScale(size2));
+            double g = SegmentTriangle(p0, p1, f, out double s, out var onSeg, out var onTri);
+            inRange = (Range.In(size2) | (a == b & a == c & a == p0 & a == p1)) & (g == 0 | Range.In(g));
+            return new DistanceResult3(Math.Sqrt(g), g, onSeg, onTri, s, 0);
+        }
+
+        /// <summary>
+        /// The least translation of segment [p0, p1] that clears a 3D triangle it meets, over the facet normals of their
+        /// Minkowski difference (a prism: N and the segment × edge directions), each projected honestly, so a noisy axis
+        /// can only overestimate. Returns the depth (0 when no axis is left: the difference is flat) and the unit direction
+        /// to move the segment (zero when none).
+        /// </summary>
+        private static double SegmentTrianglePenetration(Vector3D p0, Vector3D p1, in TriFrame f, out Vector3D dir)
+        {
+            var q0 = (p0 - f.A) * f.K;
+            var q1 = (p1 - f.A) * f.K;
+            var d = q1 - q0;
+            double best = double.PositiveInfinity;
+            dir = default;
+            SegmentAxis(f.N, q0, q1, f, ref best, ref dir);
+            SegmentAxis(Vector3D.Cross(d, f.E1), q0, q1, f, ref best, ref dir);
+            SegmentAxis(Vector3D.Cross(d, f.E2), q0, q1, f, ref best, ref dir);
+            SegmentAxis(Vector3D.Cross(d, f.E3), q0, q1, f, ref best, ref dir);
+            return best < double.PositiveInfinity ? Math.Max(0, best) / f.K : 0;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void SegmentAxis(Vector3D axis, Vector3D q0, Vector3D q1, in TriFrame f, ref double best, ref Vector3D dir)
+        {
+            double e1 = Vector3D.Dot(f.E1, axis), e2 = Vector3D.Dot(f.E2, axis), s0 = Vector3D.Dot(q0, axis), s1 = Vector3D.Dot(q1, axis);
+            PushAxis(axis, Math.Min(s0, s1), Math.Max(s0, s1), Math.Min(0, Math.Min(e1, e2)), Math.Max(0, Math.Max(e1, e2)), ref best, ref dir);
+        }
+
+        /// <summary>
+        /// Shape A projects to [minA, maxA] on the (unnormalised) axis, B to [minB, maxB]: moving A by −axis·(maxA − minB)/|axis|²
+        /// or +axis·(maxB − minA)/|axis|² clears B; the shorter is kept if it beats <paramref name="best"/> (as a length), the
+        /// first of equal ones. A zero (or overflowing) axis is skipped.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void PushAxis(Vector3D axis, double minA, double maxA, double minB, double maxB, ref double best, ref Vector3D dir)
+        {
+            double len2 = axis.LengthSquared;
+            if (!(len2 > 0) || double.IsInfinity(len2)) return;
+            double len = Math.Sqrt(len2);
+            double down = (maxA - minB) / len, up = (maxB - minA) / len;
+            if (down < best) { best = down; dir = axis * (-1 / len); }
+            if (up < best) { best = up; dir = axis * (1 / len); }
+        }
+
+        /// <summary>
+        /// A capsule's result from its axis's signed distance <paramref name="sd"/> to the other shape (solid sense), the
+        /// axis point and the other's point of the closest (or, overlapping, just-touching moved back) pair, and the unit
+        /// direction <paramref name="dir"/> that moves the axis away from the other shape: the distance less the radius,
+        /// PointA the axis point moved back by the radius.
+        /// </summary>
+        private static DistanceResult3 Inflated(double sd, Vector3D onAxis, Vector3D onOther, Vector3D dir, double t, double radius)
+        {
+            double d = sd - radius;
+            return new DistanceResult3(d == 0 ? 0 : d, d > 0 ? d * d : 0, onAxis - dir * radius, onOther, t, 0);
+        }
+
+        /// <summary>
+        /// Capsule against a 3D triangle: the solid signed distance of the axis to the triangle less the radius. Apart: the
+        /// segment–triangle closest pair. The axis meeting the triangle: the prism depth of <see cref="SegmentTrianglePenetration"/>
+        /// (0 when the axis lies in the plane or the triangle is flat), the witnesses from the axis moved by it, just touching;
+        /// with no depth direction, the plane normal (a flat triangle: a direction perpendicular to the axis and the triangle).
+        /// </summary>
+        public static DistanceResult3 CapsuleTriangle(Vector3D p0, Vector3D p1, double radius, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
+        {
+            double size2 = TriFrame.Size2(a, b, c, p0, p1);
+            var f = new TriFrame(a, b, c, InverseSizeScale(size2));
+            double g = SegmentTriangle(p0, p1, f, out double s, out var onSeg, out var onTri);
+            inRange = (Range.In(size2) | (a == b & a == c & a == p0 & a == p1)) & (g == 0 | Range.In(g));
+            if (g > 0)
+            {
+                double d = Math.Sqrt(g);
+                return Inflated(d, onSeg, onTri, (onSeg - onTri) / d, s, radius);
+            }
+            double depth = SegmentTrianglePenetration(p0, p1, f, out var dir);
+            if (dir == default) dir = f.Flat ? FlatPushDirection(p1 - p0, f) : f.Unit;
+            var push = dir * depth;
+            SegmentTriangle(p0 + push, p1 + push, f, out s, out onSeg, out onTri);
+            return Inflated(-depth, onSeg - push, onTri, dir, s, radius);
+        }
+
+        /// <summary>A unit direction perpendicular to the axis d and to the longest edge of a flat triangle (any perpendicular when they are parallel).</summary>
+        private static Vector3D FlatPushDirection(Vector3D d, in TriFrame f)
+        {
+            var e = Longest(f);
+            var n = Vector3D.Cross(d * Num.InversePowerOfTwo(Math.Max(Range.MaxAbs(d), double.Epsilon)), e);
+            double m = Range.MaxAbs(n);
+            if (m == 0) return AnyPerpendicular(Range.MaxAbs(d) > 0 ? d : e);
+            n *= Num.InversePowerOfTwo(m);
+            return n / n.Length;
+        }
+
+        /// <summary>The longest scaled edge (the first of equal ones): a flat triangle's hull.</summary>
+        private static Vector3D Longest(in TriFrame f)
+        {
+            double l1 = f.E1.LengthSquared, l2 = f.E2.LengthSquared, l3 = f.E3.LengthSquared;
+            return l1 >= l2 ? (l1 >= l3 ? f.E1 : f.E3) : (l2 >= l3 ? f.E2 : f.E3);
+        }
+
+        // ---- 2D: segment against a solid triangle ----
+
+        /// <summary>
+        /// Segment [p0, p1] against a solid 2D triangle (z = 0), as a signed distance with the closest (or, overlapping,
+        /// just-touching moved back) pair and the unit direction that moves the segment away. Overlap: the separating-axis
+        /// test over the triangle's edge normals and the segment's normal (the facet normals of their Minkowski difference;
+        /// strict inequalities, and a zero axis separates nothing); the depth is the least push over the same axes and the
+        /// witnesses come from the segment moved by it, just touching. Apart: the segment against the three edges.
+        /// A flat triangle is the segment or point it is: never negative unless <paramref name="flatDepth"/> (a capsule's axis,
+        /// whose crossing of a segment has a 2D depth), then the same axes measure that crossing.
+        /// </summary>
+        private static double SegmentTriangle2(Vector3D p0, Vector3D p1, in TriFrame f, bool flatDepth, out double s, out Vector3D onSeg, out Vector3D onTri, out Vector3D dir)
+        {
+            double area = Area2(f);
+            double g = 0;
+            s = 0; onSeg = p0; onTri = f.A;
+            bool apart;
+            if (area != 0)
+            {
+                apart = !SegmentTriangleOverlaps2(p0, p1, f);
+                if (apart) g = EdgesDistance(p0, p1, f, out s, out onSeg, out onTri);
+            }
+            else
+            {
+                g = EdgesDistance(p0, p1, f, out s, out onSeg, out onTri);
+                apart = g > 0 || !flatDepth;
+            }
+            if (apart)
+            {
+                double d = Math.Sqrt(g);
+                dir = d > 0 ? (onSeg - onTri) / d : AnyPerpendicular(Range.MaxAbs(p1 - p0) > 0 ? p1 - p0 : Longest(f));
+                return d;
+            }
+            var q0 = (p0 - f.A) * f.K;
+            var q1 = (p1 - f.A) * f.K;
+            double best = double.PositiveInfinity;
+            dir = default;
+            SegmentAxis(Perp(f.E1), q0, q1, f, ref best, ref dir);
+            SegmentAxis(Perp(f.E2), q0, q1, f, ref best, ref dir);
+            SegmentAxis(Perp(f.E3), q0, q1, f, ref best, ref dir);
+            SegmentAxis(Perp(q1 - q0), q0, q1, f, ref best, ref dir);
+            double depth = best < double.PositiveInfinity ? Math.Max(0, best) / f.K : 0;
+            if (dir == default) dir = AnyPerpendicular(Range.MaxAbs(p1 - p0) > 0 ? p1 - p0 : Longest(f));
+            var push = dir * depth;
+            EdgesDistance(p0 + push, p1 + push, f, out s, out onSeg, out onTri);
+            onSeg -= push;
+            return depth > 0 ? -depth : 0;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector3D Perp(Vector3D e) => new Vector3D(e.Y, -e.X, 0);
+
+        /// <summary>The separating-axis test of a segment against a solid, non-flat 2D triangle (see <see cref="SegmentTriangle2(Vector3D, Vector3D, in TriFrame, bool, out double, out Vector3D, out Vector3D, out Vector3D)"/>).</summary>
+        private static bool SegmentTriangleOverlaps2(Vector3D p0, Vector3D p1, in TriFrame f)
+        {
+            var q0 = (p0 - f.A) * f.K;
+            var q1 = (p1 - f.A) * f.K;
+            return !SegmentSeparated(Perp(f.E1), q0, q1, f) && !SegmentSeparated(Perp(f.E2), q0, q1, f)
+                && !SegmentSeparated(Perp(f.E3), q0, q1, f) && !SegmentSeparated(Perp(q1 - q0), q0, q1, f);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool SegmentSeparated(Vector3D axis, Vector3D q0, Vector3D q1, in TriFrame f)
+        {
+            double e1 = Vector3D.Dot(f.E1, axis), e2 = Vector3D.Dot(f.E2, axis), s0 = Vector3D.Dot(q0, axis), s1 = Vector3D.Dot(q1, axis);
+            return Math.Min(s0, s1) > Math.Max(0, Math.Max(e1, e2)) || Math.Max(s0, s1) < Math.Min(0, Math.Min(e1, e2));
+        }
+
+        /// <summary>The least squared distance of segment [p0, p1] to the triangle's three edges (the first of equal ones).</summary>
+        private static double EdgesDistance(Vector3D p0, Vector3D p1, in TriFrame f, out double s, out Vector3D onSeg, out Vector3D onTri)
+        {
+            double best = double.PositiveInfinity;
+            s = 0; onSeg = p0; onTri = f.A;
+            for (int i = 0; i < 3; i++)
+            {
+                f.Edge(i, out var v0, out var v1);
+                double g = SegmentSegmentCore(p0, p1, v0, v1, out double se, out double te, out _);
+                if (g < best) { best = g; s = se + 0; onSeg = SegmentPoint(p0, p1, se); onTri = SegmentPoint(v0, v1, te); }
+            }
+            return best;
+        }
+
+        /// <summary>Segment against a solid 2D triangle (z = 0) as a result: negative when they overlap; a flat triangle is the segment it is (never negative).</summary>
+        public static DistanceResult3 SegmentTriangle2(Vector3D p0, Vector3D p1, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
+        {
+            double size2 = TriFrame.Size2(a, b, c, p0, p1);
+            var f = new TriFrame(a, b, c, InverseSizeScale(size2));
+            double sd = SegmentTriangle2(p0, p1, f, false, out double s, out var onSeg, out var onTri, out _);
+            inRange = (Range.In(size2) | (a == b & a == c & a == p0 & a == p1)) & (sd <= 0 | Range.In(sd * sd));
+            return new DistanceResult3(sd, sd > 0 ? sd * sd : 0, onSeg, onTri, s, 0);
+        }
+
+        /// <summary>Whether a segment meets a solid 2D triangle: the separating-axis test, or for a flat triangle an exactly zero segment distance.</summary>
+        public static bool SegmentTriangleOverlaps2(Vector3D p0, Vector3D p1, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
+        {
+            double size2 = TriFrame.Size2(a, b, c, p0, p1);
+            var f = new TriFrame(a, b, c, InverseSizeScale(size2));
+            inRange = Range.In(size2) | (a == b & a == c & a == p0 & a == p1);
+            return Area2(f) != 0 ? SegmentTriangleOverlaps2(p0, p1, f) : EdgesDistance(p0, p1, f, out _, out _, out _) == 0;
+        }
+
+        /// <summary>
+        /// Capsule against a solid 2D triangle: the solid signed distance of the axis (the separating-axis depth when it
+        /// meets the triangle, including a flat triangle it crosses) less the radius.
+        /// </summary>
+        public static DistanceResult3 CapsuleTriangle2(Vector3D p0, Vector3D p1, double radius, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
+        {
+            double size2 = TriFrame.Size2(a, b, c, p0, p1);
+            var f = new TriFrame(a, b, c, InverseSizeScale(size2));
+            double sd = SegmentTriangle2(p0, p1, f, true, out double s, out var onSeg, out var onTri, out var dir);
+            inRange = (Range.In(size2) | (a == b & a == c & a == p0 & a == p1)) & (sd <= 0 | Range.In(sd * sd));
+            return Inflated(sd, onSeg, onTri, dir, s, radius);
+        }
+    }
+}

@@ -1,0 +1,28 @@
+// Copied from src/ProximityLib/Pairs/LineSphere.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System.Runtime.CompilerServices;
+
+namespace ProximityLib.Double
+{
+    public static partial class ClosestDistance
+    {
+        /// <summary>Closest distance between a line and a sphere (3D): negative when the line enters the sphere (depth = radius − distance from the center to the line); PointB on the sphere along the normal from the line (a center on the line: along <c>AnyPerpendicular</c> of the direction); ParameterA is the line's t = Direction·(center − Origin). Algorithm: orthogonal projection of the center (residual formed from differences, Eberly), less the radius.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static DistanceResult3 Core(Line3 a, Sphere b, out bool inRange) => Kernels.PointLinear(b.Center, a.Origin, a.Direction, false, true, out inRange).AsSphereFirst(b.Center, b.Radius).Swapped();
+        /// <summary>Closest distance between a line and a circle (2D): negative when the line enters the circle (depth = radius − distance from the center to the line); PointB on the circle along the normal from the line (a center on the line: along the direction's normal (y, −x)); ParameterA is the line's t = Direction·(center − Origin). Algorithm: orthogonal projection of the center (residual formed from differences, Eberly), less the radius.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static DistanceResult2 Core(Line2 a, Circle b, out bool inRange) => Kernels.PointLinear(b.Center.To3(), a.Origin.To3(), a.Direction.To3(), false, true, out inRange).AsSphereFirst(b.Center.To3(), b.Radius).Swapped().To2();
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static double DistanceCore(Line3 a, Sphere b, out bool inRange) => Kernels.PointLinearDistance(b.Center, a.Origin, a.Direction, false, out inRange) - b.Radius;
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static double DistanceCore(Line2 a, Circle b, out bool inRange) => Kernels.PointLinearDistance(b.Center.To3(), a.Origin.To3(), a.Direction.To3(), false, out inRange) - b.Radius;
+    }
+
+    public static partial class ProximityQuery
+    {
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static bool Core(Line3 a, Sphere b, out bool inRange) => Kernels.LinearInBall(b.Center, a.Origin, a.Direction, false, b.Radius, out inRange);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static bool Core(Line2 a, Circle b, out bool inRange) => Kernels.LinearInBall(b.Center.To3(), a.Origin.To3(), a.Direction.To3(), false, b.Radius, out inRange);
+    }
+}
