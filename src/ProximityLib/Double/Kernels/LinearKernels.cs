@@ -300,29 +300,6 @@ namespace ProximityLib.Double
             else { min = c; max = c; }
         }
 
-        /// <summary>
-        /// a × b for unit-scale vectors with each component a·b − c·d formed from exact products (Dekker's split; no
-        /// fused multiply–add in netstandard2.1): relative error about u per component even when the directions are
-        /// nearly parallel and the plain products cancel.
-        /// </summary>
-        public static Vector3D AccurateCross(Vector3D a, Vector3D b) =>
-            new Vector3D(DiffOfProducts(a.Y, b.Z, a.Z, b.Y), DiffOfProducts(a.Z, b.X, a.X, b.Z), DiffOfProducts(a.X, b.Y, a.Y, b.X));
-
-        private static double DiffOfProducts(double a, double b, double c, double d)
-        {
-            double p = a * b, q = c * d;
-            return (p - q) + (ProductError(a, b, p) - ProductError(c, d, q));
-        }
-
-        /// <summary>The exact a·b − p for p = fl(a·b) (Dekker, TwoProduct), for |a|, |b| ≤ 1.</summary>
-        private static double ProductError(double a, double b, double p)
-        {
-            const double Splitter = 134217729.0; // 2^27 + 1
-            double ca = Splitter * a, ah = ca - (ca - a), al = a - ah;
-            double cb = Splitter * b, bh = cb - (cb - b), bl = b - bh;
-            return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
-        }
-
         /// <summary>A power of two k with k·m in [1, 2), for a normal m &gt; 0.</summary>
         private static double InverseMagnitude(double m)
         {

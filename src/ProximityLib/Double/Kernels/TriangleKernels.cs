@@ -62,7 +62,7 @@ namespace ProximityLib.Double
 
     internal static partial class Kernels
     {
-        // ---- Exact products (Dekker): the same bits on every runtime, no fused multiply-add needed ----
+        // ---- Exact products (Dekker): the same bits on every runtime, no fused multiply-add needed (shared with the linear kernels) ----
 
         private const double Splitter = 134217729.0; // 2^27 + 1
 
