@@ -37,6 +37,7 @@ namespace ProximityMonoCheck
             Run("float factories", FloatFactories);
             Run("batch", Batch);
             Run("large batch", LargeBatch);
+            Run("ray casts", Raycasts);
             Run("coverage", Coverage);
             Console.Out.Write(Out.ToString());
             if (_failures > 0) Console.Error.WriteLine($"mono smoke: {_failures} failure(s), see the lines starting with FAIL");
@@ -579,6 +580,84 @@ namespace ProximityMonoCheck
             Line($"{Signature(query.Method)} {Show(result)}");
         }
 
+        // ---- Ray casts: every Cast overload (double and float, 2D and 3D) from a few rays, and the batch ray casts. ----
+
+        private static void Raycasts()
+        {
+            void Casts<TR, TS, TM, TH>(Func<TR, TS, TM, TH> cast, TR[] rays, TS[] shapes, TM max)
+            {
+                Called.Add(Signature(cast.Method));
+                for (int i = 0; i < rays.Length; i++)
+                    for (int j = 0; j < shapes.Length; j++)
+                        Line($"Cast({typeof(TR).Name}, {typeof(TS).Name}) [{i},{j}] {Show(cast(rays[i], shapes[j], max))}");
+            }
+            var r3 = new[] { new F.Ray3(new Vector3(-3, 0.25f, 0.5f), Vector3.UnitX), new F.Ray3(new Vector3(0.5f, 3, -0.25f), new Vector3(0, -1, 0.125f)), new F.Ray3(Far3 + new Vector3(0, 0, 5), -Vector3.UnitZ) };
+            var r2 = new[] { new F.Ray2(new Vector2(-3, 0.25f), Vector2.UnitX), new F.Ray2(new Vector2(0.5f, 3), new Vector2(0.125f, -1)), new F.Ray2(Far2 + new Vector2(0, 5), -Vector2.UnitY) };
+            var k3 = new[] { new F.Capsule3(Vector3.Zero, Vector3.UnitX, 0.5f), new F.Capsule3(Far3, Far3 + Vector3.UnitY, 1) };
+            var t3 = new[] { new F.Triangle3(new Vector3(0, -1, -1), new Vector3(0, 1, -1), new Vector3(0, 0, 2)), new F.Triangle3(Far3 - Vector3.UnitX, Far3 + Vector3.UnitX, Far3 + Vector3.UnitY) };
+            var h3 = new[] { F.HalfSpace.FromPointNormal(Vector3.Zero, new Vector3(-1, 0, 0)), F.HalfSpace.FromPointNormal(Far3, Vector3.UnitZ) };
+            var l2 = new[] { new F.Line2(Vector2.Zero, Vector2.UnitY), new F.Line2(Far2, Vector2.UnitX) };
+            var y2 = new[] { new F.Ray2(new Vector2(1, -1), Vector2.UnitY), new F.Ray2(Far2 + Vector2.UnitX, -Vector2.UnitX) };
+            var k2 = new[] { new F.Capsule2(Vector2.Zero, Vector2.UnitX, 0.5f), new F.Capsule2(Far2, Far2 + Vector2.UnitY, 1) };
+            var t2 = new[] { new F.Triangle2(new Vector2(0, -1), new Vector2(0, 1), new Vector2(2, 0)), new F.Triangle2(Far2 - Vector2.UnitX, Far2 + Vector2.UnitX, Far2 + Vector2.UnitY) };
+            var h2 = new[] { F.HalfPlane.FromPointNormal(Vector2.Zero, new Vector2(-1, 0)), F.HalfPlane.FromPointNormal(Far2, Vector2.UnitY) };
+            Casts<F.Ray3, Vector3, float, F.RayHit3>(F.Raycast.Cast, r3, P3, float.PositiveInfinity);
+            Casts<F.Ray3, F.Segment3, float, F.RayHit3>(F.Raycast.Cast, r3, G3, 4);
+            Casts<F.Ray3, F.Sphere, float, F.RayHit3>(F.Raycast.Cast, r3, S3, float.PositiveInfinity);
+            Casts<F.Ray3, F.Capsule3, float, F.RayHit3>(F.Raycast.Cast, r3, k3, float.PositiveInfinity);
+            Casts<F.Ray3, F.Triangle3, float, F.RayHit3>(F.Raycast.Cast, r3, t3, float.PositiveInfinity);
+            Casts<F.Ray3, F.HalfSpace, float, F.RayHit3>(F.Raycast.Cast, r3, h3, float.PositiveInfinity);
+            Casts<F.Ray3, F.Aabb3, float, F.RayHit3>(F.Raycast.Cast, r3, A3, 3);
+            Casts<F.Ray3, F.Obb3, float, F.RayHit3>(F.Raycast.Cast, r3, B3, float.PositiveInfinity);
+            Casts<F.Ray2, Vector2, float, F.RayHit2>(F.Raycast.Cast, r2, P2, float.PositiveInfinity);
+            Casts<F.Ray2, F.Segment2, float, F.RayHit2>(F.Raycast.Cast, r2, G2, float.PositiveInfinity);
+            Casts<F.Ray2, F.Line2, float, F.RayHit2>(F.Raycast.Cast, r2, l2, float.PositiveInfinity);
+            Casts<F.Ray2, F.Ray2, float, F.RayHit2>(F.Raycast.Cast, r2, y2, float.PositiveInfinity);
+            Casts<F.Ray2, F.Circle, float, F.RayHit2>(F.Raycast.Cast, r2, C2, 2);
+            Casts<F.Ray2, F.Capsule2, float, F.RayHit2>(F.Raycast.Cast, r2, k2, float.PositiveInfinity);
+            Casts<F.Ray2, F.Triangle2, float, F.RayHit2>(F.Raycast.Cast, r2, t2, float.PositiveInfinity);
+            Casts<F.Ray2, F.HalfPlane, float, F.RayHit2>(F.Raycast.Cast, r2, h2, float.PositiveInfinity);
+            Casts<F.Ray2, F.Aabb2, float, F.RayHit2>(F.Raycast.Cast, r2, A2, float.PositiveInfinity);
+            Casts<F.Ray2, F.Obb2, float, F.RayHit2>(F.Raycast.Cast, r2, B2, float.PositiveInfinity);
+
+            D.Ray3[] dr3 = Array.ConvertAll(r3, x => (D.Ray3)x);
+            D.Ray2[] dr2 = Array.ConvertAll(r2, x => (D.Ray2)x);
+            Casts<D.Ray3, D.Vector3D, double, D.RayHit3>(D.Raycast.Cast, dr3, Array.ConvertAll(P3, x => (D.Vector3D)x), double.PositiveInfinity);
+            Casts<D.Ray3, D.Segment3, double, D.RayHit3>(D.Raycast.Cast, dr3, Array.ConvertAll(G3, x => (D.Segment3)x), 4);
+            Casts<D.Ray3, D.Sphere, double, D.RayHit3>(D.Raycast.Cast, dr3, Array.ConvertAll(S3, x => (D.Sphere)x), double.PositiveInfinity);
+            Casts<D.Ray3, D.Capsule3, double, D.RayHit3>(D.Raycast.Cast, dr3, Array.ConvertAll(k3, x => (D.Capsule3)x), double.PositiveInfinity);
+            Casts<D.Ray3, D.Triangle3, double, D.RayHit3>(D.Raycast.Cast, dr3, Array.ConvertAll(t3, x => (D.Triangle3)x), double.PositiveInfinity);
+            Casts<D.Ray3, D.HalfSpace, double, D.RayHit3>(D.Raycast.Cast, dr3, Array.ConvertAll(h3, x => (D.HalfSpace)x), double.PositiveInfinity);
+            Casts<D.Ray3, D.Aabb3, double, D.RayHit3>(D.Raycast.Cast, dr3, Array.ConvertAll(A3, x => (D.Aabb3)x), 3);
+            Casts<D.Ray3, D.Obb3, double, D.RayHit3>(D.Raycast.Cast, dr3, Array.ConvertAll(B3, x => (D.Obb3)x), double.PositiveInfinity);
+            Casts<D.Ray2, D.Vector2D, double, D.RayHit2>(D.Raycast.Cast, dr2, Array.ConvertAll(P2, x => (D.Vector2D)x), double.PositiveInfinity);
+            Casts<D.Ray2, D.Segment2, double, D.RayHit2>(D.Raycast.Cast, dr2, Array.ConvertAll(G2, x => (D.Segment2)x), double.PositiveInfinity);
+            Casts<D.Ray2, D.Line2, double, D.RayHit2>(D.Raycast.Cast, dr2, Array.ConvertAll(l2, x => (D.Line2)x), double.PositiveInfinity);
+            Casts<D.Ray2, D.Ray2, double, D.RayHit2>(D.Raycast.Cast, dr2, Array.ConvertAll(y2, x => (D.Ray2)x), double.PositiveInfinity);
+            Casts<D.Ray2, D.Circle, double, D.RayHit2>(D.Raycast.Cast, dr2, Array.ConvertAll(C2, x => (D.Circle)x), 2);
+            Casts<D.Ray2, D.Capsule2, double, D.RayHit2>(D.Raycast.Cast, dr2, Array.ConvertAll(k2, x => (D.Capsule2)x), double.PositiveInfinity);
+            Casts<D.Ray2, D.Triangle2, double, D.RayHit2>(D.Raycast.Cast, dr2, Array.ConvertAll(t2, x => (D.Triangle2)x), double.PositiveInfinity);
+            Casts<D.Ray2, D.HalfPlane, double, D.RayHit2>(D.Raycast.Cast, dr2, Array.ConvertAll(h2, x => (D.HalfPlane)x), double.PositiveInfinity);
+            Casts<D.Ray2, D.Aabb2, double, D.RayHit2>(D.Raycast.Cast, dr2, Array.ConvertAll(A2, x => (D.Aabb2)x), double.PositiveInfinity);
+            Casts<D.Ray2, D.Obb2, double, D.RayHit2>(D.Raycast.Cast, dr2, Array.ConvertAll(B2, x => (D.Obb2)x), double.PositiveInfinity);
+            Line($"maxDistance NaN: {Attempt(() => D.Raycast.Cast(dr3[0], (D.Sphere)S3[0], double.NaN))}");
+            Line($"maxDistance -1: {Attempt(() => F.Raycast.Cast(r2[0], C2[0], -1))}");
+
+            var triangles = Enumerable.Range(0, N).Select(i => new F.Triangle3(At(i, 0), At(i, 4), At(i, 9))).ToArray();
+            var triangleSet = Set(typeof(TriangleSet), typeof(F.Triangle3), new TriangleSet(triangles));
+            triangleSet.Set(5, triangles[0]);
+            var spheres = new SphereSet(Enumerable.Range(0, N).Select(i => new F.Sphere(At(i, 3), (i % 3) * 0.75f)).ToArray());
+            var boxes = new AabbSet(Enumerable.Range(0, N).Select(i => F.Aabb3.FromCenter(At(i, 5), new Vector3(0.5f + (i % 2) * 0.5f, 0.25f, 1))).ToArray());
+            foreach (var ray in new[] { new F.Ray3(new Vector3(-3, 0.25f, 0.5f), new Vector3(1, 0.125f, 0)), new F.Ray3(new Vector3(0.5f, 3, -0.25f), -Vector3.UnitY) })
+            {
+                Distances<F.Ray3, SphereSet>((a, b, x) => BatchQuery.Raycasts(a, b, x), ray, spheres);
+                Distances<F.Ray3, AabbSet>((a, b, x) => BatchQuery.Raycasts(a, b, x, 4), ray, boxes);
+                Distances<F.Ray3, TriangleSet>((a, b, x) => BatchQuery.Raycasts(a, b, x), ray, triangleSet);
+            }
+            foreach (var set in new Type[] { typeof(SphereSet), typeof(AabbSet), typeof(TriangleSet) })
+                Called.Add(Signature(typeof(BatchQuery).GetMethod("Raycasts", new[] { typeof(F.Ray3), set, typeof(Span<float>), typeof(float) })!));
+        }
+
         // ---- Coverage: the public API by reflection against what was called. ----
 
         private static void Coverage()
@@ -588,7 +667,7 @@ namespace ProximityMonoCheck
             {
                 expected.AddRange(type.GetConstructors());
                 expected.AddRange(type.GetMethods(BindingFlags.Public | BindingFlags.Static | BindingFlags.DeclaredOnly)
-                    .Where(m => m.Name == "Between" || (m.Name == "Distance" && type.Name == "ClosestDistance") || m.Name == "Overlaps" || m.Name == "Distances" || m.Name.StartsWith("From", StringComparison.Ordinal)));
+                    .Where(m => m.Name == "Between" || (m.Name == "Distance" && type.Name == "ClosestDistance") || m.Name == "Overlaps" || m.Name == "Distances" || m.Name == "Cast" || m.Name == "Raycasts" || m.Name.StartsWith("From", StringComparison.Ordinal)));
                 if (type.IsSubclassOf(typeof(ShapeSet)))
                     expected.AddRange(type.GetMethods(BindingFlags.Public | BindingFlags.Instance | BindingFlags.DeclaredOnly).Where(m => !m.IsSpecialName));
             }

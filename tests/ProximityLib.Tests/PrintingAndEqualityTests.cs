@@ -122,6 +122,7 @@ namespace ProximityTests
                 typeof(ProximityLib.Double.Circle), typeof(ProximityLib.Double.Aabb3), typeof(ProximityLib.Double.Aabb2),
                 typeof(ProximityLib.Double.Obb3), typeof(ProximityLib.Double.Obb2),
                 typeof(ProximityLib.Double.DistanceResult3), typeof(ProximityLib.Double.DistanceResult2),
+                typeof(RayHit3), typeof(RayHit2), typeof(ProximityLib.Double.RayHit3), typeof(ProximityLib.Double.RayHit2),
             };
             // The list is every public struct of the two namespaces except the vectors.
             var publicStructs = typeof(Sphere).Assembly.GetExportedTypes()

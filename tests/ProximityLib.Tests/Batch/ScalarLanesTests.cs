@@ -115,6 +115,12 @@ namespace ProximityTests.Batch
                 verdicts("sphere–OBB one", x => BatchQuery.Overlaps(Spheres[j], obbs, x));
                 values("segment–segment", x => BatchQuery.Distances(segments, segments2, x));
                 values("segment–segment one", x => BatchQuery.Distances(Segments[j], segments2, x));
+                var triangles = new TriangleSet(Enumerable.Range(0, n).Select(i => new F.Triangle3(Points[i], Boxes[i].Min, Spheres2[i].Center)).ToArray());
+                var toward = Spheres2[j].Center - Points[j];
+                var ray = new F.Ray3(Points[j], toward == Vector3.Zero ? Vector3.UnitX : toward);
+                values("ray–sphere", x => BatchQuery.Raycasts(ray, spheres2, x));
+                values("ray–AABB", x => BatchQuery.Raycasts(ray, boxes2, x));
+                values("ray–triangle", x => BatchQuery.Raycasts(ray, triangles, x));
                 verdicts("OBB–OBB", x => BatchQuery.Overlaps(obbs, obbs2, x));
                 verdicts("OBB–OBB one", x => BatchQuery.Overlaps(Obbs[j], obbs2, x));
             }
