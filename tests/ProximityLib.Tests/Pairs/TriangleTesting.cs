@@ -131,7 +131,7 @@ namespace ProximityTests.Pairs
         /// </summary>
         public static double Check(object a, object b, string at, double band = 64) => Check(a, b, ref at, band);
 
-        public static double Check(object a, object b, ref string at, double band = 64)
+        public static double Check(object a, object b, ref string at, double band = 64, double witnessE = 64)
         {
             var r = Between(a, b);
             var rs = Between(b, a);
@@ -153,7 +153,7 @@ namespace ProximityTests.Pairs
             if (Math.Abs(r.Distance) > band * U * s) Assert.That(o, Is.EqualTo(r.Distance <= 0), "Overlaps " + at);
             // The witnesses: on (in) their shapes, and |PointA − PointB| = |Distance|.
             // Witnesses are positions: rounded at the scale of their coordinates too.
-            double tol = 64 * U * (s + Math.Max(MaxAbs(r.PointA), MaxAbs(r.PointB)));
+            double tol = witnessE * U * (s + Math.Max(MaxAbs(r.PointA), MaxAbs(r.PointB)));
             Assert.That(PointToShape(r.PointA, a, planar), Is.LessThanOrEqualTo(tol), "PointA on A " + at);
             Assert.That(PointToShape(r.PointB, b, planar), Is.LessThanOrEqualTo(tol), "PointB on B " + at);
             Assert.That(Math.Abs((r.PointA - r.PointB).Length - Math.Abs(r.Distance)), Is.LessThanOrEqualTo(tol + 1e-6 * Math.Abs(r.Distance)), "|PA − PB| " + at);

@@ -379,14 +379,25 @@ namespace ProximityLib.Double
             inRange = (Range.In(size2) | (a == b & a == c & a == p0 & a == p1)) & (g == 0 | Range.In(g));
             if (g > 0)
             {
-                double d = Math.Sqrt(g);
-                return Inflated(d, onSeg, onTri, (onSeg - onTri) / d, s, radius);
+                return Inflated(Math.Sqrt(g), onSeg, onTri, UnitOr(onSeg - onTri, f.Flat ? FlatPushDirection(p1 - p0, f) : f.Unit), s, radius);
             }
             double depth = SegmentTrianglePenetration(p0, p1, f, out var dir);
             if (dir == default) dir = f.Flat ? FlatPushDirection(p1 - p0, f) : f.Unit;
             var push = dir * depth;
             SegmentTriangle(p0 + push, p1 + push, f, out s, out onSeg, out onTri);
             return Inflated(-depth, onSeg - push, onTri, dir, s, radius);
+        }
+
+        /// <summary>
+        /// v normalised (scaled by a power of two first), or the fallback for a zero v. From the witness points, whose
+        /// difference for a tiny gap is mostly rounding: normalising it keeps the radius's offset exactly a radius long.
+        /// </summary>
+        private static Vector3D UnitOr(Vector3D v, Vector3D fallback)
+        {
+            double m = Range.MaxAbs(v);
+            if (m == 0) return fallback;
+            v *= Num.InversePowerOfTwo(m);
+            return v / v.Length;
         }
 
         /// <summary>A unit direction perpendicular to the axis d and to the longest edge of a flat triangle (any perpendicular when they are parallel).</summary>
@@ -437,7 +448,7 @@ namespace ProximityLib.Double
             if (apart)
             {
                 double d = Math.Sqrt(g);
-                dir = d > 0 ? (onSeg - onTri) / d : AnyPerpendicular(Range.MaxAbs(p1 - p0) > 0 ? p1 - p0 : Longest(f));
+                dir = UnitOr(onSeg - onTri, AnyPerpendicular(Range.MaxAbs(p1 - p0) > 0 ? p1 - p0 : Longest(f)));
                 return d;
             }
             var q0 = (p0 - f.A) * f.K;
