@@ -121,6 +121,8 @@ namespace ProximityTests.Pairs
                 new[] { typeof(double), typeof(double), typeof(Vector3D), typeof(Vector3D), typeof(double), typeof(double) }, null)!
                 .Invoke(new object[] { r.Distance, r.DistanceSquared, new Vector3D(r.PointA.X, r.PointA.Y, 0), new Vector3D(r.PointB.X, r.PointB.Y, 0), r.ParameterA, r.ParameterB });
 
+        private static double MaxAbs(Vector3D v) => Math.Max(Math.Abs(v.X), Math.Max(Math.Abs(v.Y), Math.Abs(v.Z)));
+
         private static long Bits(double x) => BitConverter.DoubleToInt64Bits(x);
 
         /// <summary>
@@ -129,7 +131,7 @@ namespace ProximityTests.Pairs
         /// </summary>
         public static double Check(object a, object b, string at, double band = 64) => Check(a, b, ref at, band);
 
-        public static double Check(object a, object b, ref string at, double band = 64)
+        public static double Check(object a, object b, ref string at, double band = 64, double witnessE = 64)
         {
             var r = Between(a, b);
             var rs = Between(b, a);
@@ -150,7 +152,8 @@ namespace ProximityTests.Pairs
             Assert.That((bool)ProximityQuery.Overlaps((dynamic)b, (dynamic)a), Is.EqualTo(o), "Overlaps swapped " + at);
             if (Math.Abs(r.Distance) > band * U * s) Assert.That(o, Is.EqualTo(r.Distance <= 0), "Overlaps " + at);
             // The witnesses: on (in) their shapes, and |PointA − PointB| = |Distance|.
-            double tol = 64 * U * s;
+            // Witnesses are positions: rounded at the scale of their coordinates too.
+            double tol = witnessE * U * (s + Math.Max(MaxAbs(r.PointA), MaxAbs(r.PointB)));
             Assert.That(PointToShape(r.PointA, a, planar), Is.LessThanOrEqualTo(tol), "PointA on A " + at);
             Assert.That(PointToShape(r.PointB, b, planar), Is.LessThanOrEqualTo(tol), "PointB on B " + at);
             Assert.That(Math.Abs((r.PointA - r.PointB).Length - Math.Abs(r.Distance)), Is.LessThanOrEqualTo(tol + 1e-6 * Math.Abs(r.Distance)), "|PA − PB| " + at);

@@ -1,0 +1,100 @@
+using System;
+using NUnit.Framework;
+using ProximityLib.Double;
+using static ProximityTests.Support.Expect;
+using static ProximityTests.Pairs.TriangleTesting;
+
+namespace ProximityTests.Pairs
+{
+    public class CapsuleTriangleTests
+    {
+        private static readonly Triangle3 T = new Triangle3(V(0, 0, 0), V(4, 0, 0), V(0, 4, 0));
+        private static readonly Triangle2 T2 = new Triangle2(V(0, 0), V(4, 0), V(0, 4));
+
+        [Test]
+        public void ApartAndShallow()
+        {
+            var r = ClosestDistance.Between(new Capsule3(V(1, 1, 2), V(1, 1, 5), 0.5), T);
+            Result(r, 1.5, V(1, 1, 1.5), V(1, 1, 0));
+            Assert.That(r.ParameterA, Is.EqualTo(0));
+            Result(ClosestDistance.Between(new Capsule3(V(1, 1, 0.25), V(1, 1, 5), 0.5), T), -0.25, V(1, 1, -0.25), V(1, 1, 0));
+            Assert.That(ProximityQuery.Overlaps(new Capsule3(V(1, 1, 0.25), V(1, 1, 5), 0.5), T), Is.True);
+            Assert.That(ProximityQuery.Overlaps(new Capsule3(V(1, 1, 2), V(1, 1, 5), 0.5), T), Is.False);
+        }
+
+        [Test]
+        public void AxisThroughTheTriangleAddsTheCrossingDepth()
+        {
+            // The axis crosses at (1, 1, 0): pushing it up by 1 (N first among equal pushes) puts its Start on the
+            // triangle; the capsule then needs its radius more.
+            var r = ClosestDistance.Between(new Capsule3(V(1, 1, -1), V(1, 1, 3), 0.5), T);
+            Result(r, -1.5, V(1, 1, -1.5), V(1, 1, 0));
+            Assert.That(r.ParameterA, Is.EqualTo(0));
+            // An axis lying in the plane across the triangle: no crossing depth; the radius along −N (on N both pushes are
+            // 0, and the push toward −axis comes first).
+            var flat = ClosestDistance.Between(new Capsule3(V(1, -1, 0), V(1, 5, 0), 0.5), T);
+            Assert.That(flat.Distance, Is.EqualTo(-0.5));
+            Near(flat.PointB - flat.PointA, V(0, 0, -0.5), 1e-15, "push " + flat);
+        }
+
+        [Test]
+        public void TwoDimensional()
+        {
+            // Axis inside the solid triangle: the segment's depth 1 (down through AB) plus the radius.
+            var r = ClosestDistance.Between(new Capsule2(V(1, 1), V(2, 1), 0.25), T2);
+            Assert.That(r.Distance, Is.EqualTo(-1.25).Within(1e-15));
+            Near(new Vector3D(r.PointB.X - r.PointA.X, r.PointB.Y - r.PointA.Y, 0), V(0, -1.25, 0), 1e-15, "push");
+            Result(ClosestDistance.Between(new Capsule2(V(3, 3), V(3, 5), 0.5), T2), Math.Sqrt(2) - 0.5, V(3 - Math.Sqrt(0.125), 3 - Math.Sqrt(0.125)), V(2, 2));
+            // A flat triangle crossed by the axis: the 2D crossing depth (1 sideways past the flat triangle's end) plus r.
+            var flat = new Triangle2(V(0, 0), V(4, 0), V(2, 0));
+            Assert.That(ClosestDistance.Between(new Capsule2(V(1, -3), V(1, 3), 0.5), flat).Distance, Is.EqualTo(-1.5).Within(1e-15));
+            Assert.That(ProximityQuery.Overlaps(new Capsule2(V(1, -3), V(1, 3), 0.5), flat), Is.True);
+        }
+
+        [Test]
+        public void ScalingAndRandomFamilies()
+        {
+            CheckScaling(new Capsule3(V(1, 1, -1), V(1.5, 1, 3), 0.5), T, "crossing", 1, 900, -900);
+            CheckScaling(new Capsule2(V(1, 1), V(2, 1.5), 0.25), T2, "inside", 1, 900, -900);
+            var g = new Random(15);
+            var w2 = new Worst("capsule–triangle 2D");
+            for (int i = 0; i < 200; i++)
+            {
+                string at;
+                var t2 = Tri2(g, i);
+                var q0 = Near(g, t2);
+                var q1 = i % 3 == 0 ? q0 + (t2.B - t2.A) * g.NextDouble() + P2(g, 1e-9) : Near(g, t2);
+                var c2 = new Capsule2(q0, q1, g.NextDouble() * Math.Pow(2, -g.Next(30)));
+                at = $"2D case {i}";
+                w2.Add(Check(c2, t2, ref at), at);
+                if (i % 25 == 0) CheckScaling(c2, t2, at, 3, 900, -900);
+            }
+            // KNOWN WEAKNESS (see below): an axis nearly parallel to a sliver's edges has an ill-conditioned 2D depth too.
+            w2.Report(1e12);
+        }
+
+        /// <summary>
+        /// The random 3D families. KNOWN WEAKNESS (reported, bounds loosened): an axis crossing the triangle nearly parallel to an edge, or crossing a
+        /// needle or sliver, takes its depth from an axis × edge direction that rounding makes ill-conditioned (error about
+        /// u·S/sinθ; the honest projection can only overestimate, and the witnesses of the pushed axis are then apart by
+        /// that much). Measured here, asserted against loose bounds so a regression shows.
+        /// </summary>
+        [Test]
+        public void NearlyParallelAxisCrossingTheTriangle()
+        {
+            var g = new Random(16);
+            var w = new Worst("capsule–triangle 3D (all families)");
+            for (int i = 0; i < 200; i++)
+            {
+                var t = Tri3(g, i);
+                var p0 = Near(g, t);
+                var p1 = i % 2 == 0 ? p0 + (t.B - t.A) * g.NextDouble() + P3(g, 1e-9) : Near(g, t);
+                var c = new Capsule3(p0, p1, g.NextDouble() * Math.Pow(2, -g.Next(30)));
+                string at = $"case {i}";
+                w.Add(Check(c, t, ref at, 1e8, 1e8), at);
+                if (i % 25 == 0) CheckScaling(c, t, at, 3, 900, -900);
+            }
+            w.Report(1e8);
+        }
+    }
+}
