@@ -115,13 +115,17 @@ namespace ProximityLib.Double
 
         private Vector3D Back(Vector3D p) => _translate ? _lo + p * _up1 * _up2 : p * _up1 * _up2;
 
-        public DistanceResult3 Back(in DistanceResult3 r) =>
+        /// <summary>The answer in the original frame; a parameter that is a length (a line's or ray's t, flagged) scales too.</summary>
+        public DistanceResult3 Back(in DistanceResult3 r, bool lengthA, bool lengthB) =>
             new DistanceResult3(r.Distance * _up1 * _up2, r.DistanceSquared * _up1 * _up1 * _up2 * _up2,
-                Back(r.PointA), Back(r.PointB), r.ParameterA, r.ParameterB);
+                Back(r.PointA), Back(r.PointB), Parameter(r.ParameterA, lengthA), Parameter(r.ParameterB, lengthB));
 
-        public DistanceResult2 Back(in DistanceResult2 r) =>
+        /// <summary>As for <see cref="Back(in DistanceResult3, bool, bool)"/>.</summary>
+        public DistanceResult2 Back(in DistanceResult2 r, bool lengthA, bool lengthB) =>
             new DistanceResult2(r.Distance * _up1 * _up2, r.DistanceSquared * _up1 * _up1 * _up2 * _up2,
-                Vector2D.From3(Back(r.PointA.To3())), Vector2D.From3(Back(r.PointB.To3())), r.ParameterA, r.ParameterB);
+                Vector2D.From3(Back(r.PointA.To3())), Vector2D.From3(Back(r.PointB.To3())), Parameter(r.ParameterA, lengthA), Parameter(r.ParameterB, lengthB));
+
+        private double Parameter(double t, bool length) => length ? t * _up1 * _up2 : t;
 
         private static double MaxAbs(Vector3D v) => Math.Max(Math.Abs(v.X), Math.Max(Math.Abs(v.Y), Math.Abs(v.Z)));
 
@@ -156,7 +160,7 @@ namespace ProximityLib.Double
             where TA : struct, IScalable<TA> where TB : struct, IScalable<TB>
         {
             var s = Measure(a, b);
-            return s.Back(core(a.Rescaled(s), b.Rescaled(s)));
+            return s.Back(core(a.Rescaled(s), b.Rescaled(s)), LengthParameter<TA>(), LengthParameter<TB>());
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
@@ -164,7 +168,7 @@ namespace ProximityLib.Double
             where TA : struct, IScalable<TA> where TB : struct, IScalable<TB>
         {
             var s = Measure(a, b);
-            return s.Back(core(a.Rescaled(s), b.Rescaled(s)));
+            return s.Back(core(a.Rescaled(s), b.Rescaled(s)), LengthParameter<TA>(), LengthParameter<TB>());
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
@@ -174,6 +178,10 @@ namespace ProximityLib.Double
             var s = Measure(a, b);
             return core(a.Rescaled(s), b.Rescaled(s));
         }
+
+        /// <summary>Whether a shape's result parameter is a length (a line's or ray's t = distance from its origin), which scales with the frame; a segment's or capsule's t does not.</summary>
+        private static bool LengthParameter<T>() =>
+            typeof(T) == typeof(Line3) || typeof(T) == typeof(Line2) || typeof(T) == typeof(Ray3) || typeof(T) == typeof(Ray2);
 
         private static Rescale Measure<TA, TB>(TA a, TB b) where TA : struct, IScalable<TA> where TB : struct, IScalable<TB>
         {
