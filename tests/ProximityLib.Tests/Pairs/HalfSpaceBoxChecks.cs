@@ -228,7 +228,8 @@ namespace ProximityTests.Pairs
                 pmin += Rational.Min(x, y); pmax += Rational.Max(x, y);
             }
             var od = RVec.Dot(O, D);
-            Rational T0 = (pmin - od) / dd, T1 = (pmax - od) / dd;
+            // A point-like stretch (u = 0, a segment of zero length): t0 alone.
+            Rational T0 = dd.IsZero ? (Rational)t0 : (pmin - od) / dd, T1 = dd.IsZero ? (Rational)t0 : (pmax - od) / dd;
             if (!double.IsInfinity(t0)) { T0 = Rational.Max(T0, t0); T1 = Rational.Max(T1, t0); }
             if (!double.IsInfinity(t1)) { T0 = Rational.Min(T0, t1); T1 = Rational.Min(T1, t1); }
             // Breakpoints in (T0, T1), sorted.
