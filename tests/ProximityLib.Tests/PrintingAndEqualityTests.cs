@@ -123,6 +123,11 @@ namespace ProximityTests
                 typeof(ProximityLib.Double.Obb3), typeof(ProximityLib.Double.Obb2),
                 typeof(ProximityLib.Double.DistanceResult3), typeof(ProximityLib.Double.DistanceResult2),
                 typeof(RayHit3), typeof(RayHit2), typeof(ProximityLib.Double.RayHit3), typeof(ProximityLib.Double.RayHit2),
+                typeof(Line3), typeof(Line2), typeof(Ray3), typeof(Ray2), typeof(Capsule3), typeof(Capsule2), typeof(Triangle3), typeof(Triangle2),
+                typeof(HalfSpace), typeof(HalfPlane),
+                typeof(ProximityLib.Double.Line3), typeof(ProximityLib.Double.Line2), typeof(ProximityLib.Double.Ray3), typeof(ProximityLib.Double.Ray2),
+                typeof(ProximityLib.Double.Capsule3), typeof(ProximityLib.Double.Capsule2), typeof(ProximityLib.Double.Triangle3),
+                typeof(ProximityLib.Double.Triangle2), typeof(ProximityLib.Double.HalfSpace), typeof(ProximityLib.Double.HalfPlane),
             };
             // The list is every public struct of the two namespaces except the vectors.
             var publicStructs = typeof(Sphere).Assembly.GetExportedTypes()

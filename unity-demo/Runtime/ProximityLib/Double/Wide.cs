@@ -117,13 +117,16 @@ namespace ProximityLib.Double
 
         private Vector3D Back(Vector3D p) => _translate ? _lo + p * _up1 * _up2 : p * _up1 * _up2;
 
-        public DistanceResult3 Back(in DistanceResult3 r) =>
+        /// <summary>The answer in the original frame; a line's or ray's parameter (<paramref name="lengthA"/>, <paramref name="lengthB"/>) is a length and scales back too.</summary>
+        public DistanceResult3 Back(in DistanceResult3 r, bool lengthA, bool lengthB) =>
             new DistanceResult3(r.Distance * _up1 * _up2, r.DistanceSquared * _up1 * _up1 * _up2 * _up2,
-                Back(r.PointA), Back(r.PointB), r.ParameterA, r.ParameterB);
+                Back(r.PointA), Back(r.PointB), lengthA ? r.ParameterA * _up1 * _up2 : r.ParameterA, lengthB ? r.ParameterB * _up1 * _up2 : r.ParameterB);
 
-        public DistanceResult2 Back(in DistanceResult2 r) =>
+        /// <summary>As for 3D.</summary>
+        public DistanceResult2 Back(in DistanceResult2 r, bool lengthA, bool lengthB) =>
             new DistanceResult2(r.Distance * _up1 * _up2, r.DistanceSquared * _up1 * _up1 * _up2 * _up2,
-                Vector2D.From3(Back(r.PointA.To3())), Vector2D.From3(Back(r.PointB.To3())), r.ParameterA, r.ParameterB);
+                Vector2D.From3(Back(r.PointA.To3())), Vector2D.From3(Back(r.PointB.To3())),
+                lengthA ? r.ParameterA * _up1 * _up2 : r.ParameterA, lengthB ? r.ParameterB * _up1 * _up2 : r.ParameterB);
 
         /// <summary>A ray hit mapped back: T scales like a length, the normal is a direction and stays.</summary>
         public RayHit3 Back(in RayHit3 h) => h.Hit ? new RayHit3(h.T * _up1 * _up2, Back(h.Point), h.Normal, h.StartsInside) : h;
@@ -164,7 +167,7 @@ namespace ProximityLib.Double
             where TA : struct, IScalable<TA> where TB : struct, IScalable<TB>
         {
             var s = Measure(a, b);
-            return s.Back(core(a.Rescaled(s), b.Rescaled(s)));
+            return s.Back(core(a.Rescaled(s), b.Rescaled(s)), LengthParameter<TA>(), LengthParameter<TB>());
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
@@ -172,7 +175,7 @@ namespace ProximityLib.Double
             where TA : struct, IScalable<TA> where TB : struct, IScalable<TB>
         {
             var s = Measure(a, b);
-            return s.Back(core(a.Rescaled(s), b.Rescaled(s)));
+            return s.Back(core(a.Rescaled(s), b.Rescaled(s)), LengthParameter<TA>(), LengthParameter<TB>());
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
@@ -198,6 +201,10 @@ namespace ProximityLib.Double
             var s = Measure(ray, b);
             return s.Back(core(ray.Rescaled(s), b.Rescaled(s)));
         }
+
+        /// <summary>Whether the shape's result parameter is a length (a line's or ray's t), which scales with the frame.</summary>
+        private static bool LengthParameter<T>() =>
+            typeof(T) == typeof(Line3) || typeof(T) == typeof(Ray3) || typeof(T) == typeof(Line2) || typeof(T) == typeof(Ray2);
 
         private static Rescale Measure<TA, TB>(TA a, TB b) where TA : struct, IScalable<TA> where TB : struct, IScalable<TB>
         {

@@ -10,7 +10,7 @@ namespace ProximityLib.Double
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a capsule and a triangle (3D): the axis's solid signed distance to the triangle less the radius: apart, the segment–triangle gap less the radius; an axis through the triangle adds the depth of that crossing (the least push over the triangle's normal and the axis × edge directions), an axis touching or lying in the plane none; the push direction is then the triangle's normal (B − A) × (C − A) when no axis gives one. ParameterA is the axis parameter of the point nearest PointA. Algorithm: segment–triangle distance (see the segment–triangle query) and separating-axis depth of the axis–triangle prism (Ericson RTCD §5.5.7 style sweep), less the radius.</summary>
+        /// <summary>Closest distance between a capsule and a triangle (3D): the axis's solid signed distance to the triangle less the radius: apart, the segment–triangle gap less the radius; an axis through the triangle adds the depth of that crossing (the least push over the triangle's normal and the axis × edge directions), an axis touching or lying in the plane none (equal pushes: the first of N then the axis × edge directions AB, AC, BC, toward −axis first). ParameterA is the axis parameter of the point nearest PointA. Algorithm: segment–triangle distance (see the segment–triangle query) and separating-axis depth of the axis–triangle prism (Ericson RTCD §5.5.7 style sweep), less the radius.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Capsule3 a, Triangle3 b)
         {
@@ -83,7 +83,7 @@ namespace ProximityLib
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a capsule and a triangle (3D), computed in double: the axis's solid signed distance to the triangle less the radius: apart, the segment–triangle gap less the radius; an axis through the triangle adds the depth of that crossing (the least push over the triangle's normal and the axis × edge directions), an axis touching or lying in the plane none; the push direction is then the triangle's normal (B − A) × (C − A) when no axis gives one. ParameterA is the axis parameter of the point nearest PointA.</summary>
+        /// <summary>Closest distance between a capsule and a triangle (3D), computed in double: the axis's solid signed distance to the triangle less the radius: apart, the segment–triangle gap less the radius; an axis through the triangle adds the depth of that crossing (the least push over the triangle's normal and the axis × edge directions), an axis touching or lying in the plane none (equal pushes: the first of N then the axis × edge directions AB, AC, BC, toward −axis first). ParameterA is the axis parameter of the point nearest PointA.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Capsule3 a, Triangle3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a triangle and a capsule (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>

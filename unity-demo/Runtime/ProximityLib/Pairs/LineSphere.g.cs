@@ -10,7 +10,7 @@ namespace ProximityLib.Double
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a line and a sphere (3D): negative when the line enters the sphere (depth = radius − distance from the center to the line); PointB on the sphere along the normal from the line (a center on the line: along <c>AnyPerpendicular</c> of the direction); ParameterA is the line's t = Direction·(center − Origin). Algorithm: orthogonal projection of the center (residual formed from differences, Eberly), less the radius.</summary>
+        /// <summary>Closest distance between a line and a sphere (3D): negative when the line enters the sphere (depth = radius − distance from the center to the line); PointB on the sphere along the normal from the line (a center on the line: PointB = center − <c>AnyPerpendicular</c>(direction)·radius); ParameterA is the line's t = Direction·(center − Origin). Algorithm: orthogonal projection of the center (residual formed from differences, Eberly), less the radius.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Line3 a, Sphere b)
         {
@@ -20,7 +20,7 @@ namespace ProximityLib.Double
         /// <summary>Closest distance between a sphere and a line (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Sphere a, Line3 b) => Between(b, a).Swapped();
-        /// <summary>Closest distance between a line and a circle (2D): negative when the line enters the circle (depth = radius − distance from the center to the line); PointB on the circle along the normal from the line (a center on the line: along the direction's normal (y, −x)); ParameterA is the line's t = Direction·(center − Origin). Algorithm: orthogonal projection of the center (residual formed from differences, Eberly), less the radius.</summary>
+        /// <summary>Closest distance between a line and a circle (2D): negative when the line enters the circle (depth = radius − distance from the center to the line); PointB on the circle along the normal from the line (a center on the line: PointB = center − (y, −x)·radius for the direction (x, y)); ParameterA is the line's t = Direction·(center − Origin). Algorithm: orthogonal projection of the center (residual formed from differences, Eberly), less the radius.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Line2 a, Circle b)
         {
@@ -91,13 +91,13 @@ namespace ProximityLib
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a line and a sphere (3D), computed in double: negative when the line enters the sphere (depth = radius − distance from the center to the line); PointB on the sphere along the normal from the line (a center on the line: along <c>AnyPerpendicular</c> of the direction); ParameterA is the line's t = Direction·(center − Origin).</summary>
+        /// <summary>Closest distance between a line and a sphere (3D), computed in double: negative when the line enters the sphere (depth = radius − distance from the center to the line); PointB on the sphere along the normal from the line (a center on the line: PointB = center − <c>AnyPerpendicular</c>(direction)·radius); ParameterA is the line's t = Direction·(center − Origin).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Line3 a, Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a sphere and a line (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Sphere a, Line3 b) => Between(b, a).Swapped();
-        /// <summary>Closest distance between a line and a circle (2D), computed in double: negative when the line enters the circle (depth = radius − distance from the center to the line); PointB on the circle along the normal from the line (a center on the line: along the direction's normal (y, −x)); ParameterA is the line's t = Direction·(center − Origin).</summary>
+        /// <summary>Closest distance between a line and a circle (2D), computed in double: negative when the line enters the circle (depth = radius − distance from the center to the line); PointB on the circle along the normal from the line (a center on the line: PointB = center − (y, −x)·radius for the direction (x, y)); ParameterA is the line's t = Direction·(center − Origin).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Line2 a, Circle b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a circle and a line (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>

@@ -10,7 +10,7 @@ namespace ProximityLib.Double
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a ray and a sphere (3D): negative when the ray enters the sphere (depth = radius − distance from the center to the ray); PointB on the sphere along the normal from the ray (a center on the ray: along <c>AnyPerpendicular</c> of the direction); ParameterA is the ray's t, the projection clamped at 0. Algorithm: projection of the center clamped at the origin (residual formed from differences, Eberly), less the radius.</summary>
+        /// <summary>Closest distance between a ray and a sphere (3D): negative when the ray enters the sphere (depth = radius − distance from the center to the ray); PointB on the sphere along the normal from the ray (a center on the ray: PointB = center − <c>AnyPerpendicular</c>(direction)·radius); ParameterA is the ray's t, the projection clamped at 0. Algorithm: projection of the center clamped at the origin (residual formed from differences, Eberly), less the radius.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Ray3 a, Sphere b)
         {
@@ -20,7 +20,7 @@ namespace ProximityLib.Double
         /// <summary>Closest distance between a sphere and a ray (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Sphere a, Ray3 b) => Between(b, a).Swapped();
-        /// <summary>Closest distance between a ray and a circle (2D): negative when the ray enters the circle (depth = radius − distance from the center to the ray); PointB on the circle along the normal from the ray (a center on the ray: along the direction's normal (y, −x)); ParameterA is the ray's t, the projection clamped at 0. Algorithm: projection of the center clamped at the origin (residual formed from differences, Eberly), less the radius.</summary>
+        /// <summary>Closest distance between a ray and a circle (2D): negative when the ray enters the circle (depth = radius − distance from the center to the ray); PointB on the circle along the normal from the ray (a center on the ray: PointB = center − (y, −x)·radius for the direction (x, y)); ParameterA is the ray's t, the projection clamped at 0. Algorithm: projection of the center clamped at the origin (residual formed from differences, Eberly), less the radius.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Ray2 a, Circle b)
         {
@@ -91,13 +91,13 @@ namespace ProximityLib
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a ray and a sphere (3D), computed in double: negative when the ray enters the sphere (depth = radius − distance from the center to the ray); PointB on the sphere along the normal from the ray (a center on the ray: along <c>AnyPerpendicular</c> of the direction); ParameterA is the ray's t, the projection clamped at 0.</summary>
+        /// <summary>Closest distance between a ray and a sphere (3D), computed in double: negative when the ray enters the sphere (depth = radius − distance from the center to the ray); PointB on the sphere along the normal from the ray (a center on the ray: PointB = center − <c>AnyPerpendicular</c>(direction)·radius); ParameterA is the ray's t, the projection clamped at 0.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Ray3 a, Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a sphere and a ray (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Sphere a, Ray3 b) => Between(b, a).Swapped();
-        /// <summary>Closest distance between a ray and a circle (2D), computed in double: negative when the ray enters the circle (depth = radius − distance from the center to the ray); PointB on the circle along the normal from the ray (a center on the ray: along the direction's normal (y, −x)); ParameterA is the ray's t, the projection clamped at 0.</summary>
+        /// <summary>Closest distance between a ray and a circle (2D), computed in double: negative when the ray enters the circle (depth = radius − distance from the center to the ray); PointB on the circle along the normal from the ray (a center on the ray: PointB = center − (y, −x)·radius for the direction (x, y)); ParameterA is the ray's t, the projection clamped at 0.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Ray2 a, Circle b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a circle and a ray (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>

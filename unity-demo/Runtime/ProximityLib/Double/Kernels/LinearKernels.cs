@@ -97,7 +97,8 @@ namespace ProximityLib.Double
         /// Two lines or rays (o, unit d): well apart in direction, the lines' closest parameters from cross products of
         /// an accurately formed normal n = dA × dB (<see cref="AccurateCross"/>: the plain cross product cancels to noise
         /// for nearly parallel directions, and the gap w·n/|n| and the parameters ((w × dB)·n, (w × dA)·n)/|n|² then
-        /// carry only u·|w|); when both lie on their shapes, the gap between the lines is the answer. Otherwise the
+        /// carry only u·|w|); when both lie on their shapes, the gap between the lines is the answer, and the witnesses are
+        /// refined by projection. Otherwise the
         /// minimum lies where a ray starts: each ray's origin against the other shape, the smaller residual, ties to A.
         /// Parallel lines: A's origin against B. Each boundary candidate is measured as the residual of the two points it
         /// returns. Directions so close that the parameters would pass 1e300 count as parallel.
@@ -119,7 +120,13 @@ namespace ProximityLib.Double
                 double ti = Vector3D.Dot(Vector3D.Cross(w, dA), nk) / nn * k;
                 if (Math.Abs(si) <= 1e300 && Math.Abs(ti) <= 1e300 && (!rayA || si >= 0) && (!rayB || ti >= 0))
                 {
-                    s = si; t = ti;
+                    // The parameters are known to u·|w|/θ along nearly parallel lines, each on its own: a projection
+                    // of A's point onto B and back makes the pair consistent (each projection is well conditioned), so
+                    // the returned points realise the gap to within their own rounding.
+                    t = Vector3D.Dot(dB, dA * si - w);
+                    if (rayB && t < 0) t = 0;
+                    s = Vector3D.Dot(dA, w + dB * t);
+                    if (rayA && s < 0) s = 0;
                     double gap = Vector3D.Dot(w, nk) / Math.Sqrt(nn), g2 = gap * gap;
                     inRange = sized && (gap == 0 || Range.In(g2));
                     return g2;
@@ -194,7 +201,7 @@ namespace ProximityLib.Double
             s += 0; t += 0; // −0 + 0 = 0
             var pa = a.PointAt(s);
             var pb = SegmentPoint(b0, b1, t);
-            if (!solid) return new DistanceResult3(Math.Sqrt(r2), r2, pa, pb, s, t);
+            if (!solid) return new DistanceResult3(Math.Sqrt(r2), r2, pa, r2 == 0 ? pa : pb, s, t); // meeting: one common point
 
             double r = ra + rb, dist = Math.Sqrt(r2);
             inRange &= r <= double.MaxValue;
@@ -202,8 +209,8 @@ namespace ProximityLib.Double
             if (planar)
             {
                 var b = Linear.Segment(b0, b1);
-                double g = Separation2(a, b, out var axis);
-                if (g < 0) return Crossing2(a, ra, b, rb, g, axis);
+                double g = Separation2(a, b, out var axis, out bool aFlat);
+                if (g < 0) return Crossing2(a, ra, b, rb, g, axis, aFlat);
                 // Touching axes have no residual: the separating axis orients the push (A lies on its + side).
                 n = v != default ? v * (1 / v.Length) : (axis != default ? -axis : Vector3D.UnitX);
             }
@@ -220,25 +227,24 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// The crossing depth case of 2D capsules: the axes' Minkowski difference holds the origin at depth −g below the
-        /// face of <paramref name="axis"/> (unit, A on its + side), so A moves by (−g + ra + rb)·axis. The axis point of
-        /// the shape whose extent along the axis is an endpoint (that endpoint) is paired with its image across the depth
-        /// on the other axis.
+        /// face of <paramref name="axis"/> (unit, A on its + side), so A moves by (−g + ra + rb)·axis. The endpoint that
+        /// bounds the extent along the axis (A's, unless the axis is A's own normal) is paired with its image across the
+        /// depth on the other axis.
         /// </summary>
-        private static DistanceResult3 Crossing2(in Linear a, double ra, in Linear b, double rb, double g, Vector3D axis)
+        private static DistanceResult3 Crossing2(in Linear a, double ra, in Linear b, double rb, double g, Vector3D axis, bool aFlat)
         {
-            double kA = Vector3D.Dot(a.Dir, axis), kB = Vector3D.Dot(b.Dir, axis);
             double s, t;
             Vector3D pa, pb;
-            if (kA != 0)
+            if (!aFlat)
             {
-                s = kA > 0 ? a.Lo : a.Hi;
+                s = Vector3D.Dot(a.Dir, axis) > 0 ? a.Lo : a.Hi;
                 pa = a.PointAt(s);
                 pb = pa - axis * g;
                 t = Project(b, pb - b.Start);
             }
             else
             {
-                t = kB > 0 ? b.Hi : b.Lo;
+                t = Vector3D.Dot(b.Dir, axis) > 0 ? b.Hi : b.Lo;
                 pb = b.PointAt(t);
                 pa = pb + axis * g;
                 s = Project(a, pa - a.Start);
@@ -260,38 +266,46 @@ namespace ProximityLib.Double
         /// normal to the directions; the along-axes only tighten it where the difference is a thin sliver). Negative
         /// exactly when the origin is inside A − B, and then −(its depth), the distance to the nearest face: the 2D
         /// crossing depth. <paramref name="axis"/> is the unit axis of the largest gap, oriented with A on its + side
-        /// (zero when no direction is non-zero; the result is then +∞). Extents are measured from A's start, so a common
-        /// translation costs nothing. Ties go to the earlier axis.
+        /// (zero when no direction is non-zero; the result is then +∞); <paramref name="aFlat"/> when it is A's own normal
+        /// (A's extent along it is one value). Extents are measured from A's start, so a common translation costs
+        /// nothing. Ties go to the earlier axis.
         /// </summary>
-        public static double Separation2(in Linear a, in Linear b, out Vector3D axis)
+        public static double Separation2(in Linear a, in Linear b, out Vector3D axis, out bool aFlat)
         {
             double g = double.PositiveInfinity;
             axis = default;
+            aFlat = false;
             var w = b.Start - a.Start;
             var da = a.Dir;
             var db = b.Dir;
             double la = Math.Sqrt(da.X * da.X + da.Y * da.Y), lb = Math.Sqrt(db.X * db.X + db.Y * db.Y);
             bool first = true;
+            // Unnormalised axes, so a component's own normal meets its direction in an exact 0 (its extent along it is
+            // one value, even for a line); the gaps are divided by the length afterwards.
             if (la > 0)
             {
-                Gap(new Vector3D(-da.Y / la, da.X / la, 0), a, b, w, ref g, ref axis, ref first);
-                Gap(new Vector3D(da.X / la, da.Y / la, 0), a, b, w, ref g, ref axis, ref first);
+                Gap(new Vector3D(-da.Y, da.X, 0), la, a, b, w, ref g, ref axis, ref first);
+                aFlat = true;
+                if (Gap(new Vector3D(da.X, da.Y, 0), la, a, b, w, ref g, ref axis, ref first)) aFlat = false;
             }
             if (lb > 0)
             {
-                Gap(new Vector3D(-db.Y / lb, db.X / lb, 0), a, b, w, ref g, ref axis, ref first);
-                Gap(new Vector3D(db.X / lb, db.Y / lb, 0), a, b, w, ref g, ref axis, ref first);
+                if (Gap(new Vector3D(-db.Y, db.X, 0), lb, a, b, w, ref g, ref axis, ref first)) aFlat = false;
+                if (Gap(new Vector3D(db.X, db.Y, 0), lb, a, b, w, ref g, ref axis, ref first)) aFlat = false;
             }
             return g;
         }
 
-        private static void Gap(Vector3D e, in Linear a, in Linear b, Vector3D w, ref double g, ref Vector3D axis, ref bool first)
+        /// <summary>Takes the axis e/len when either orientation's gap beats g (ties to the earlier); true when it did.</summary>
+        private static bool Gap(Vector3D e, double len, in Linear a, in Linear b, Vector3D w, ref double g, ref Vector3D axis, ref bool first)
         {
+            bool took = false;
             Extent(0, Vector3D.Dot(a.Dir, e), a.Lo, a.Hi, out double loA, out double hiA);
             Extent(Vector3D.Dot(w, e), Vector3D.Dot(b.Dir, e), b.Lo, b.Hi, out double loB, out double hiB);
-            double up = loA - hiB, down = loB - hiA;
-            if (first || up > g) { g = up; axis = e; first = false; }
-            if (down > g) { g = down; axis = -e; }
+            double up = (loA - hiB) / len, down = (loB - hiA) / len;
+            if (first || up > g) { g = up; axis = e / len; first = false; took = true; }
+            if (down > g) { g = down; axis = -e / len; took = true; }
+            return took;
         }
 
         /// <summary>The extent c + [lo, hi]·k of a component along an axis (k its direction's component; ±∞ for unbounded ends).</summary>
@@ -300,29 +314,6 @@ namespace ProximityLib.Double
             if (k > 0) { min = c + lo * k; max = c + hi * k; }
             else if (k < 0) { min = c + hi * k; max = c + lo * k; }
             else { min = c; max = c; }
-        }
-
-        /// <summary>
-        /// a × b for unit-scale vectors with each component a·b − c·d formed from exact products (Dekker's split; no
-        /// fused multiply–add in netstandard2.1): relative error about u per component even when the directions are
-        /// nearly parallel and the plain products cancel.
-        /// </summary>
-        public static Vector3D AccurateCross(Vector3D a, Vector3D b) =>
-            new Vector3D(DiffOfProducts(a.Y, b.Z, a.Z, b.Y), DiffOfProducts(a.Z, b.X, a.X, b.Z), DiffOfProducts(a.X, b.Y, a.Y, b.X));
-
-        private static double DiffOfProducts(double a, double b, double c, double d)
-        {
-            double p = a * b, q = c * d;
-            return (p - q) + (ProductError(a, b, p) - ProductError(c, d, q));
-        }
-
-        /// <summary>The exact a·b − p for p = fl(a·b) (Dekker, TwoProduct), for |a|, |b| ≤ 1.</summary>
-        private static double ProductError(double a, double b, double p)
-        {
-            const double Splitter = 134217729.0; // 2^27 + 1
-            double ca = Splitter * a, ah = ca - (ca - a), al = a - ah;
-            double cb = Splitter * b, bh = cb - (cb - b), bl = b - bh;
-            return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
         }
 
         /// <summary>A power of two k with k·m in [1, 2), for a normal m &gt; 0.</summary>
@@ -337,7 +328,9 @@ namespace ProximityLib.Double
         {
             double r2 = Unbounded(oA, dA, rayA, oB, dB, rayB, out double s, out double t, out inRange);
             s += 0; t += 0; // −0 + 0 = 0
-            return new DistanceResult3(Math.Sqrt(r2), r2, oA + dA * s, oB + dB * t, s, t);
+            var pa = oA + dA * s;
+            // Meeting shapes answer one common point (the contract for two non-solids).
+            return new DistanceResult3(Math.Sqrt(r2), r2, pa, r2 == 0 ? pa : oB + dB * t, s, t);
         }
 
         /// <summary>

@@ -39,7 +39,9 @@ namespace ProximityLib.Double
             double h = (w - d * b).Length;
             if (!(h <= r)) return RayHit3.Miss;
             double t = (wl - r) * (wl + r) / (Math.Sqrt((r - h) * (r + h)) - b);
-            return new RayHit3(t, o + d * t, Unit(w + d * t, -d), false);
+            // The point from the center and the normal: on the surface to rounding at the sphere's scale, however far the origin.
+            var n = Unit(w + d * t, -d);
+            return new RayHit3(t, center + n * r, n, false);
         }
 
         /// <summary>
@@ -72,7 +74,11 @@ namespace ProximityLib.Double
                     {
                         double t = (wl - r) * (wl + r) / (Math.Sqrt(aa) * Math.Sqrt((r - h) * (r + h)) - bq);
                         double u = wp + dp * t;
-                        if (u >= 0 && u <= 1 && t < best.T) best = new RayHit3(t, o + d * t, Unit(wn + dn * t, -d), false);
+                        if (u >= 0 && u <= 1 && t < best.T)
+                        {
+                            var n = Unit(wn + dn * t, -d);
+                            best = new RayHit3(t, SegmentPoint(a, b, u) + n * r, n, false);
+                        }
                     }
                 }
             }

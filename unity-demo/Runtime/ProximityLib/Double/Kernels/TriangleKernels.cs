@@ -64,7 +64,7 @@ namespace ProximityLib.Double
 
     internal static partial class Kernels
     {
-        // ---- Exact products (Dekker): the same bits on every runtime, no fused multiply-add needed ----
+        // ---- Exact products (Dekker): the same bits on every runtime, no fused multiply-add needed (shared with the linear kernels) ----
 
         private const double Splitter = 134217729.0; // 2^27 + 1
 
@@ -179,9 +179,70 @@ namespace ProximityLib.Double
             return new PointContact(len, g, SegmentPoint(v0, v1, t), normal, 0);
         }
 
-        /// <summary>Twice the signed area of a 2D triangle (its scaled z-normal), to about one rounding: its sign is the orientation.</summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double Area2(in TriFrame f) => DiffOfProducts(f.E1.X, f.E2.Y, f.E1.Y, f.E2.X);
+        /// <summary>
+        /// The orientation of a 2D triangle as −1, 0 or +1: the exact sign of (B − A) × (C − A) for the given vertices. The
+        /// rounded edges decide it when their cross product (formed with exact products) is clear of their rounding;
+        /// otherwise the exact value is summed without error. Exactness matters here: a triangle with any area is a solid
+        /// (a segment crossing a sliver is inside it by up to the sliver's length), a flat one is the segment it is.
+        /// </summary>
+        private static double Area2(in TriFrame f)
+        {
+            double area = DiffOfProducts(f.E1.X, f.E2.Y, f.E1.Y, f.E2.X);
+            if (Math.Abs(area) > 4.440892098500626e-16 * (Math.Abs(f.E1.X * f.E2.Y) + Math.Abs(f.E1.Y * f.E2.X))) return Math.Sign(area);
+            return OrientationSign(f.A, f.B, f.C, f.K);
+        }
+
+        /// <summary>
+        /// The exact sign of (b − a) × (c − a) (x, y only): each difference exactly as two doubles (Knuth's two-sum), scaled
+        /// by the power of two k (exact, and far from underflow), the eight products exactly as two doubles each (Dekker),
+        /// summed into a non-overlapping expansion (Shewchuk's grow-expansion, zeros dropped) whose largest component has
+        /// the sign of the sum.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static double OrientationSign(Vector3D a, Vector3D b, Vector3D c, double k)
+        {
+            TwoDiff(b.X, a.X, k, out double h1, out double l1);
+            TwoDiff(c.Y, a.Y, k, out double h2, out double l2);
+            TwoDiff(b.Y, a.Y, k, out double h3, out double l3);
+            TwoDiff(c.X, a.X, k, out double h4, out double l4);
+            Span<double> e = stackalloc double[16];
+            int n = 0;
+            AddProduct(e, ref n, h1, h2); AddProduct(e, ref n, h1, l2); AddProduct(e, ref n, l1, h2); AddProduct(e, ref n, l1, l2);
+            AddProduct(e, ref n, -h3, h4); AddProduct(e, ref n, -h3, l4); AddProduct(e, ref n, -l3, h4); AddProduct(e, ref n, -l3, l4);
+            for (int i = n - 1; i >= 0; i--)
+                if (e[i] != 0) return Math.Sign(e[i]);
+            return 0;
+        }
+
+        /// <summary>x − y = (h + l)/k exactly, with h = fl(x − y)·k.</summary>
+        private static void TwoDiff(double x, double y, double k, out double h, out double l)
+        {
+            double d = x - y, yv = x - d, xv = d + yv;
+            l = ((x - xv) + (yv - y)) * k;
+            h = d * k;
+        }
+
+        private static void AddProduct(Span<double> e, ref int n, double x, double y)
+        {
+            double p = x * y;
+            Grow(e, ref n, ProductError(x, y, p));
+            Grow(e, ref n, p);
+        }
+
+        /// <summary>Adds b to the expansion e[0..n) exactly (Shewchuk's grow-expansion with zero elimination).</summary>
+        private static void Grow(Span<double> e, ref int n, double b)
+        {
+            double q = b;
+            int m = 0;
+            for (int i = 0; i < n; i++)
+            {
+                double sum = q + e[i], bv = sum - q, av = sum - bv, err = (q - av) + (e[i] - bv);
+                if (err != 0) e[m++] = err;
+                q = sum;
+            }
+            if (q != 0) e[m++] = q;
+            n = m;
+        }
 
         /// <summary>Whether the 2D point x lies on the inner side of (or on) every edge of the triangle of orientation <paramref name="area"/>.</summary>
         private static bool Inside2(Vector3D x, in TriFrame f, double area)
@@ -320,14 +381,25 @@ namespace ProximityLib.Double
             inRange = (Range.In(size2) | (a == b & a == c & a == p0 & a == p1)) & (g == 0 | Range.In(g));
             if (g > 0)
             {
-                double d = Math.Sqrt(g);
-                return Inflated(d, onSeg, onTri, (onSeg - onTri) / d, s, radius);
+                return Inflated(Math.Sqrt(g), onSeg, onTri, UnitOr(onSeg - onTri, f.Flat ? FlatPushDirection(p1 - p0, f) : f.Unit), s, radius);
             }
             double depth = SegmentTrianglePenetration(p0, p1, f, out var dir);
             if (dir == default) dir = f.Flat ? FlatPushDirection(p1 - p0, f) : f.Unit;
             var push = dir * depth;
             SegmentTriangle(p0 + push, p1 + push, f, out s, out onSeg, out onTri);
             return Inflated(-depth, onSeg - push, onTri, dir, s, radius);
+        }
+
+        /// <summary>
+        /// v normalised (scaled by a power of two first), or the fallback for a zero v. From the witness points, whose
+        /// difference for a tiny gap is mostly rounding: normalising it keeps the radius's offset exactly a radius long.
+        /// </summary>
+        private static Vector3D UnitOr(Vector3D v, Vector3D fallback)
+        {
+            double m = Range.MaxAbs(v);
+            if (m == 0) return fallback;
+            v *= Num.InversePowerOfTwo(m);
+            return v / v.Length;
         }
 
         /// <summary>A unit direction perpendicular to the axis d and to the longest edge of a flat triangle (any perpendicular when they are parallel).</summary>
@@ -378,7 +450,7 @@ namespace ProximityLib.Double
             if (apart)
             {
                 double d = Math.Sqrt(g);
-                dir = d > 0 ? (onSeg - onTri) / d : AnyPerpendicular(Range.MaxAbs(p1 - p0) > 0 ? p1 - p0 : Longest(f));
+                dir = UnitOr(onSeg - onTri, AnyPerpendicular(Range.MaxAbs(p1 - p0) > 0 ? p1 - p0 : Longest(f)));
                 return d;
             }
             var q0 = (p0 - f.A) * f.K;

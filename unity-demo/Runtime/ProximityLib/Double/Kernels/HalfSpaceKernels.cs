@@ -1,0 +1,249 @@
+// Copied from src/ProximityLib/Double/Kernels/HalfSpaceKernels.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System;
+using System.Runtime.CompilerServices;
+
+namespace ProximityLib.Double
+{
+    internal static partial class Kernels
+    {
+        // A half-space {x : n·(x − p) ≤ 0} (n unit, p a stored boundary point) against another shape. Every height above the
+        // boundary is measured as n·(x − p) from the stored point, never through the offset n·p: its rounding would be at
+        // the scale of the boundary's distance from the origin instead of the configuration's.
+        //
+        // inRange: the relative coordinates lie in [2^-450, 2^450] (or are 0), so no product of a height underflows or
+        // overflows, and a positive distance's square lies in [2^-960, 2^960] (see Range).
+
+        /// <summary>
+        /// A ball (center c, radius r ≥ 0; a point when r = 0) against the half-space: its lowest point c − n·r and that
+        /// point's foot on the boundary, as the pair (ball, half-space). <paramref name="t"/> is reported as ParameterA.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static DistanceResult3 BallHalfSpace(Vector3D c, double r, Vector3D n, Vector3D p, double t, out bool inRange)
+        {
+            var d = c - p;
+            double s = Vector3D.Dot(n, d), dist = s - r;
+            inRange = Range.Box(Math.Max(Range.MaxAbs(d), r)) & (dist <= 0 | Range.In(dist * dist));
+            return new DistanceResult3(dist, dist > 0 ? dist * dist : 0, c - n * r, c - n * s, t, 0);
+        }
+
+        /// <summary>The distance of <see cref="BallHalfSpace"/> alone (the same operations and <paramref name="inRange"/>).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double BallHalfSpaceDistance(Vector3D c, double r, Vector3D n, Vector3D p, out bool inRange)
+        {
+            var d = c - p;
+            double dist = Vector3D.Dot(n, d) - r;
+            inRange = Range.Box(Math.Max(Range.MaxAbs(d), r)) & (dist <= 0 | Range.In(dist * dist));
+            return dist;
+        }
+
+        /// <summary>
+        /// A capsule (axis [a, b], radius r; a segment when r = 0) against the half-space: the lower axis end, as a ball
+        /// (<see cref="BallHalfSpace"/>). The signed distance is linear along the axis, so an end attains its minimum; when
+        /// both ends are equally high (the axis parallel to the boundary), Start (parameter 0).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static DistanceResult3 CapsuleHalfSpace(Vector3D a, Vector3D b, double r, Vector3D n, Vector3D p, out bool inRange)
+        {
+            var da = a - p;
+            var db = b - p;
+            bool end = Vector3D.Dot(n, db) < Vector3D.Dot(n, da);
+            // The ends' magnitudes are checked too: an overflowed height would have made the choice meaningless.
+            var r1 = BallHalfSpace(end ? b : a, r, n, p, end ? 1 : 0, out inRange);
+            inRange &= Range.Box(Math.Max(Range.MaxAbs(da), Range.MaxAbs(db)));
+            return r1;
+        }
+
+        /// <summary>The distance of <see cref="CapsuleHalfSpace"/> alone (the same operations and <paramref name="inRange"/>).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double CapsuleHalfSpaceDistance(Vector3D a, Vector3D b, double r, Vector3D n, Vector3D p, out bool inRange)
+        {
+            var da = a - p;
+            var db = b - p;
+            double sa = Vector3D.Dot(n, da), sb = Vector3D.Dot(n, db);
+            double d = BallHalfSpaceDistance(sb < sa ? b : a, r, n, p, out inRange);
+            inRange &= Range.Box(Math.Max(Range.MaxAbs(da), Range.MaxAbs(db)));
+            return d;
+        }
+
+        /// <summary>
+        /// The vertices a, b, c against the half-space: the lowest vertex (the first of A, B, C among equally low ones) and
+        /// its foot on the boundary, as the pair (triangle, half-space). The signed distance is linear over the triangle, so
+        /// a vertex attains its minimum whether the triangle is a solid (2D) or not (3D).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static DistanceResult3 TriangleHalfSpace(Vector3D a, Vector3D b, Vector3D c, Vector3D n, Vector3D p, out bool inRange)
+        {
+            var r = BallHalfSpace(LowestVertex(a, b, c, n, p, out bool vertices), 0, n, p, 0, out inRange);
+            inRange &= vertices;
+            return r;
+        }
+
+        /// <summary>The distance of <see cref="TriangleHalfSpace"/> alone (the same operations and <paramref name="inRange"/>).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double TriangleHalfSpaceDistance(Vector3D a, Vector3D b, Vector3D c, Vector3D n, Vector3D p, out bool inRange)
+        {
+            double d = BallHalfSpaceDistance(LowestVertex(a, b, c, n, p, out bool vertices), 0, n, p, out inRange);
+            inRange &= vertices;
+            return d;
+        }
+
+        /// <summary>The lowest of a, b, c along n (the first on ties); <paramref name="inRange"/>: their offsets from p are in the box range.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector3D LowestVertex(Vector3D a, Vector3D b, Vector3D c, Vector3D n, Vector3D p, out bool inRange)
+        {
+            var da = a - p;
+            var db = b - p;
+            var dc = c - p;
+            double sa = Vector3D.Dot(n, da), sb = Vector3D.Dot(n, db), sc = Vector3D.Dot(n, dc);
+            inRange = Range.Box(Math.Max(Range.MaxAbs(da), Math.Max(Range.MaxAbs(db), Range.MaxAbs(dc))));
+            var low = a;
+            if (sb < sa) { low = b; sa = sb; }
+            return sc < sa ? c : low;
+        }
+
+        /// <summary>
+        /// A line (origin o, unit direction u; a ray when <paramref name="ray"/>) against the half-space. Not parallel to
+        /// the boundary (a line), or heading inward (a ray): the penetration is unbounded, −∞, and both witnesses are the
+        /// crossing point o + t·u, t = −n·(o − p)/n·u (a ray that starts inside: its origin); should the crossing lie beyond
+        /// the double range, the origin. Otherwise the minimum is at every point of a line (parallel) or at a ray's origin,
+        /// which is returned with its foot on the boundary.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static DistanceResult3 LineHalfSpace(Vector3D o, Vector3D u, bool ray, Vector3D n, Vector3D p, out bool inRange)
+        {
+            var d = o - p;
+            double s = Vector3D.Dot(n, d), k = Vector3D.Dot(n, u);
+            inRange = Range.Box(Range.MaxAbs(d));
+            if (ray ? k < 0 : k != 0)
+            {
+                double t = 0;
+                if (!ray || s > 0)
+                {
+                    t = -s / k + 0.0; // + 0.0: a crossing at the origin is t = +0 whatever the signs
+                    var x = o + u * t;
+                    if (double.IsInfinity(x.X) || double.IsInfinity(x.Y) || double.IsInfinity(x.Z)) t = 0;
+                }
+                var common = t == 0 ? o : o + u * t;
+                return new DistanceResult3(double.NegativeInfinity, 0, common, common, t, 0);
+            }
+            inRange &= s <= 0 | Range.In(s * s);
+            return new DistanceResult3(s, s > 0 ? s * s : 0, o, o - n * s, 0, 0);
+        }
+
+        /// <summary>The distance of <see cref="LineHalfSpace"/> alone (the same operations and <paramref name="inRange"/>).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double LineHalfSpaceDistance(Vector3D o, Vector3D u, bool ray, Vector3D n, Vector3D p, out bool inRange)
+        {
+            var d = o - p;
+            double s = Vector3D.Dot(n, d), k = Vector3D.Dot(n, u);
+            inRange = Range.Box(Range.MaxAbs(d));
+            if (ray ? k < 0 : k != 0) return double.NegativeInfinity;
+            inRange &= s <= 0 | Range.In(s * s);
+            return s;
+        }
+
+        /// <summary>Whether a line or ray meets the half-space: it is not parallel to the boundary (a line) or heads inward (a ray), or its origin is inside.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool LineHalfSpaceOverlaps(Vector3D o, Vector3D u, bool ray, Vector3D n, Vector3D p, out bool inRange)
+        {
+            var d = o - p;
+            double k = Vector3D.Dot(n, u);
+            inRange = Range.Box(Range.MaxAbs(d));
+            return (ray ? k < 0 : k != 0) || Vector3D.Dot(n, d) <= 0;
+        }
+
+        /// <summary>
+        /// Half-space A (na, pa) against half-space B (nb, pb), symmetric by construction (swapping the arguments swaps the
+        /// witnesses, bit for bit). Exactly opposite normals: the signed gap na·(pb − pa) between the parallel boundaries,
+        /// witnessed by the feet on both boundaries of the midpoint of the stored points. Otherwise the intersection is
+        /// unbounded: −∞, with a common point: the midpoint of the stored points if each lies in the other half-space, else
+        /// the stored point that does, else the point of both boundaries nearest the midpoint (should that lie beyond the
+        /// double range, the midpoint).
+        /// </summary>
+        public static DistanceResult3 HalfSpaceHalfSpace(Vector3D na, Vector3D pa, Vector3D nb, Vector3D pb, out bool inRange)
+        {
+            inRange = Range.Box(Range.MaxAbs(pb - pa));
+            // Halves first: pa + pb can overflow. Addition commutes, so either order gives this midpoint.
+            var m = pa * 0.5 + pb * 0.5;
+            if (na == -nb)
+            {
+                double gap = Vector3D.Dot(na, pb - pa); // swapped: (−na)·(−(pb − pa)), the same products
+                inRange &= gap <= 0 | Range.In(gap * gap);
+                return new DistanceResult3(gap, gap > 0 ? gap * gap : 0, m - na * Vector3D.Dot(na, m - pa), m - nb * Vector3D.Dot(nb, m - pb), 0, 0);
+            }
+            // Each stored point's height above the other boundary, written the same way in both argument orders.
+            bool aInB = Vector3D.Dot(nb, pa - pb) <= 0, bInA = Vector3D.Dot(na, pb - pa) <= 0;
+            Vector3D common;
+            if (aInB && bInA) common = m;
+            else if (aInB) common = pa;
+            else if (bInA) common = pb;
+            else common = BoundaryMeet(na, pa, nb, pb, m);
+            return new DistanceResult3(double.NegativeInfinity, 0, common, common, 0, 0);
+        }
+
+        /// <summary>
+        /// The point of both boundaries nearest m: m + α·na + β·nb with na·(x − pa) = 0 = nb·(x − pb), a 2×2 system whose
+        /// determinant 1 − c² (c = na·nb) is formed as (1 − c)(1 + c). Symmetric in the two half-spaces bit for bit; m when
+        /// the point is not finite.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static Vector3D BoundaryMeet(Vector3D na, Vector3D pa, Vector3D nb, Vector3D pb, Vector3D m)
+        {
+            double c = Vector3D.Dot(na, nb), ea = Vector3D.Dot(na, pa - m), eb = Vector3D.Dot(nb, pb - m);
+            double det = (1 - c) * (1 + c);
+            double alpha = (ea - c * eb) / det, beta = (eb - c * ea) / det;
+            var x = m + (na * alpha + nb * beta);
+            return double.IsFinite(x.X) && double.IsFinite(x.Y) && double.IsFinite(x.Z) ? x : m;
+        }
+
+        /// <summary>The distance of <see cref="HalfSpaceHalfSpace"/> alone (the same operations and <paramref name="inRange"/>).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double HalfSpaceHalfSpaceDistance(Vector3D na, Vector3D pa, Vector3D nb, Vector3D pb, out bool inRange)
+        {
+            var d = pb - pa;
+            inRange = Range.Box(Range.MaxAbs(d));
+            if (!(na == -nb)) return double.NegativeInfinity;
+            double gap = Vector3D.Dot(na, d);
+            inRange &= gap <= 0 | Range.In(gap * gap);
+            return gap;
+        }
+
+        /// <summary>
+        /// Half-space (n, p) against a box, as the pair (half-space, box): the signed height of the box's lowest point,
+        /// n·(origin − p) + Σ k_i·q_i with k = n in the box frame and q the lowest corner (box-local), from differences
+        /// only. Witnesses: that point of the box and its foot on the boundary; where an axis is level (k_i = 0: a face or
+        /// edge parallel to the boundary) the middle of the box along it, so the middle of the lowest face or edge.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static DistanceResult3 HalfSpaceBox(Vector3D n, Vector3D p, in Box box, out bool inRange)
+        {
+            var q = LowestCorner(n, p, box, out double s, out inRange);
+            var onBox = box.Origin + box.ToWorldOffset(q);
+            return new DistanceResult3(s, s > 0 ? s * s : 0, onBox - n * s, onBox, 0, 0);
+        }
+
+        /// <summary>The distance of <see cref="HalfSpaceBox"/> alone (the same operations and <paramref name="inRange"/>).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double HalfSpaceBoxDistance(Vector3D n, Vector3D p, in Box box, out bool inRange)
+        {
+            LowestCorner(n, p, box, out double s, out inRange);
+            return s;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector3D LowestCorner(Vector3D n, Vector3D p, in Box box, out double s, out bool inRange)
+        {
+            var d = box.Origin - p;
+            var k = box.ToLocal(n);
+            var q = new Vector3D(Lowest(k.X, box.Lo.X, box.Hi.X), Lowest(k.Y, box.Lo.Y, box.Hi.Y), Lowest(k.Z, box.Lo.Z, box.Hi.Z));
+            s = Vector3D.Dot(n, d) + Vector3D.Dot(k, q);
+            inRange = Range.Box(Math.Max(Range.MaxAbs(d), Range.MaxAbs(box.Hi - box.Lo))) & (s <= 0 | Range.In(s * s));
+            return q;
+        }
+
+        /// <summary>The lowest coordinate of [lo, hi] along an axis rising at rate k: lo, hi, or the middle when level.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Lowest(double k, double lo, double hi) => k > 0 ? lo : (k < 0 ? hi : 0.5 * lo + 0.5 * hi);
+    }
+}

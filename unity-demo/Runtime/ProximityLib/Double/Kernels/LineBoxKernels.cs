@@ -1,0 +1,191 @@
+// Copied from src/ProximityLib/Double/Kernels/LineBoxKernels.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
+#nullable enable
+using System;
+using System.Runtime.CompilerServices;
+
+namespace ProximityLib.Double
+{
+    internal static partial class Kernels
+    {
+        /// <summary>
+        /// A line (origin o, unit direction u), or a ray when <paramref name="ray"/>, against a solid box, as the pair
+        /// (line, box), in the box frame relative to the box centre (so a far origin costs only the rounding of its own
+        /// offset). Apart (by the separating-axis verdict the overlap query gives): the closest points lie where the line
+        /// parameter is within the box's projection onto the line, so the line clipped to that stretch (widened, and for a
+        /// ray cut at 0) is a segment whose closest pair with the box (<see cref="SegmentBoxLocal"/>) is the line's.
+        /// Meeting: the least push over the directions that can clear it (<see cref="LineBoxPenetration"/>), and the pair of
+        /// the just-touching configuration, the line's point moved back.
+        /// </summary>
+        public static DistanceResult3 LineBox(Vector3D o, Vector3D u, bool ray, in Box box, out bool inRange)
+        {
+            var ro = o - box.Origin;
+            inRange = Range.Box(Math.Max(Range.MaxAbs(ro), Range.MaxAbs(box.Hi - box.Lo)));
+            var c = box.LocalCenter;
+            var h = box.Half;
+            var m = box.ToLocal(ro) - c;
+            var d = box.ToLocal(u);
+            double t;
+            Vector3D e;
+            if (!LineBoxOverlapsLocal(m, d, h, box.Planar, ray))
+            {
+                double g = LineBoxNearest(m, d, h, ray, out t, out e);
+                // A subnormal squared gap has lost bits: the slow path answers it at a scale where it has not.
+                inRange &= g == 0 || Range.In(g);
+                return new DistanceResult3(Math.Sqrt(g), g, o + u * t, box.Origin + box.ToWorldOffset(c + Clamp(e, -h, h)), t, 0);
+            }
+            double depth = Math.Max(0, LineBoxPenetration(m, d, h, box.Planar, ray, out var push));
+            // The line moved by the push just touches the box: its closest pair there, the line's point moved back.
+            LineBoxNearest(m + push, d, h, ray, out t, out e);
+            var onLine = o + u * t;
+            return new DistanceResult3(-depth, 0, onLine, depth > 0 ? box.Origin + box.ToWorldOffset(c + Clamp(e, -h, h)) : onLine, t, 0);
+        }
+
+        /// <summary>
+        /// The squared distance from the line m + t·d (box-local, relative to the centre, d unit to rounding; t ≥ 0 for a
+        /// ray) to the box [−h, h], its parameter t and its point e. Every closest point of the line has t within the
+        /// box's projection onto it, [tc − reach, tc + reach] with tc the parameter nearest the centre; the stretch is
+        /// doubled (and widened by 2^-40·|tc| for the rounding of tc) so the clipped segment holds the minimum strictly.
+        /// </summary>
+        private static double LineBoxNearest(Vector3D m, Vector3D d, Vector3D h, bool ray, out double t, out Vector3D e)
+        {
+            double tc = -Vector3D.Dot(m, d);
+            double reach = h.X * Math.Abs(d.X) + h.Y * Math.Abs(d.Y) + h.Z * Math.Abs(d.Z);
+            double w = 2 * reach + Math.Abs(tc) * (1.0 / (1L << 40));
+            double t0 = tc - w, t1 = tc + w;
+            if (ray) { t0 = Math.Max(t0, 0); t1 = Math.Max(t1, 0); }
+            double len = t1 - t0;
+            var a = m + d * t0;
+            var span = d * len;
+            double g = SegmentBoxLocal(a, span, -h, h, out double s);
+            t = s <= 0.5 ? t0 + len * s : t1 - len * (1 - s);
+            e = a + span * s;
+            return g;
+        }
+
+        /// <summary>
+        /// The least push (box-local) that clears the line m + t·d (relative to the box centre) from the box of
+        /// half-extents h. A line can only be cleared sideways: over the directions d × box axis (planar: the in-plane
+        /// one), on which the whole line projects to one value; they include every box normal perpendicular to the line.
+        /// A ray can also be pushed back past a face it leaves through: along a box normal n with n·d ≥ 0, by the
+        /// distance from its origin to that face.
+        /// </summary>
+        private static double LineBoxPenetration(Vector3D m, Vector3D d, Vector3D h, bool planar, bool ray, out Vector3D push)
+        {
+            double best = double.PositiveInfinity;
+            push = default;
+            if (ray)
+            {
+                TryRayFace(m.X, d.X, h.X, Vector3D.UnitX, ref best, ref push);
+                TryRayFace(m.Y, d.Y, h.Y, Vector3D.UnitY, ref best, ref push);
+                if (!planar) TryRayFace(m.Z, d.Z, h.Z, Vector3D.UnitZ, ref best, ref push);
+            }
+            TryCrossAxis(new Vector3D(d.Y, -d.X, 0), m.X * d.Y - m.Y * d.X, h.X * Math.Abs(d.Y) + h.Y * Math.Abs(d.X), ref best, ref push);
+            if (!planar)
+            {
+                TryCrossAxis(new Vector3D(0, d.Z, -d.Y), m.Y * d.Z - m.Z * d.Y, h.Y * Math.Abs(d.Z) + h.Z * Math.Abs(d.Y), ref best, ref push);
+                TryCrossAxis(new Vector3D(-d.Z, 0, d.X), m.Z * d.X - m.X * d.Z, h.X * Math.Abs(d.Z) + h.Z * Math.Abs(d.X), ref best, ref push);
+            }
+            return best;
+        }
+
+        /// <summary>A box normal n along which the ray covers [m, ∞) (d &gt; 0), (−∞, m] (d &lt; 0) or {m} (d = 0); the box [−h, h].</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void TryRayFace(double m, double d, double h, Vector3D n, ref double best, ref Vector3D push)
+        {
+            if (d >= 0 && h - m < best) { best = h - m; push = n * best; }
+            if (d <= 0 && m + h < best) { best = m + h; push = -n * best; }
+        }
+
+        /// <summary>Whether a line or ray meets a solid box (separating-axis test, no square roots).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool LineBoxOverlaps(Vector3D o, Vector3D u, bool ray, in Box box, out bool inRange)
+        {
+            var ro = o - box.Origin;
+            inRange = Range.Box(Math.Max(Range.MaxAbs(ro), Range.MaxAbs(box.Hi - box.Lo)));
+            return LineBoxOverlapsLocal(box.ToLocal(ro) - box.LocalCenter, box.ToLocal(u), box.Half, box.Planar, ray);
+        }
+
+        /// <summary>
+        /// The separating-axis test of the line (or ray) m + t·d, relative to the box centre, against the box of
+        /// half-extents h: for a ray the box normals (it covers a half-line along each), then for both the d × box-axis
+        /// directions, on which the line projects to one value (the segment test's cross axes; Ericson RTCD §5.3.3).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool LineBoxOverlapsLocal(Vector3D m, Vector3D d, Vector3D h, bool planar, bool ray)
+        {
+            if (ray && (RaySlabSeparates(m.X, d.X, h.X) || RaySlabSeparates(m.Y, d.Y, h.Y) || (!planar && RaySlabSeparates(m.Z, d.Z, h.Z)))) return false;
+            if (Math.Abs(m.X * d.Y - m.Y * d.X) > h.X * Math.Abs(d.Y) + h.Y * Math.Abs(d.X)) return false;
+            if (planar) return true;
+            return !(Math.Abs(m.Y * d.Z - m.Z * d.Y) > h.Y * Math.Abs(d.Z) + h.Z * Math.Abs(d.Y))
+                && !(Math.Abs(m.Z * d.X - m.X * d.Z) > h.X * Math.Abs(d.Z) + h.Z * Math.Abs(d.X));
+        }
+
+        /// <summary>Whether the ray's cover of one axis (from m, heading the sign of d) misses [−h, h].</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool RaySlabSeparates(double m, double d, double h) => (m > h && d >= 0) || (m < -h && d <= 0);
+
+        /// <summary>
+        /// A capsule (axis [a, b], radius r) against a solid box: the axis's solid signed distance (as
+        /// <see cref="SegmentBox"/>: the same verdict, minimum and push) less r, and the axis's witness moved by r along the
+        /// contact direction: toward the box when apart (the box-local gap vector, normalised), against the push when the
+        /// axis meets the box; where the push is zero (the axis touching), against the outward normal of the nearest face.
+        /// </summary>
+        public static DistanceResult3 CapsuleBox(Vector3D a, Vector3D b, double r, in Box box, out bool inRange)
+        {
+            var ra = a - box.Origin;
+            inRange = Range.Box(Math.Max(Math.Max(Range.MaxAbs(ra), r), Math.Max(Range.MaxAbs(b - box.Origin), Range.MaxAbs(box.Hi - box.Lo))));
+            var la = box.ToLocal(ra);
+            var ld = box.ToLocal(b - a);
+            Vector3D lo = box.Lo, hi = box.Hi, c = box.LocalCenter, h = box.Half;
+            double t, dist;
+            if (!SegmentBoxOverlapsLocal(la - c, ld, h, box.Planar))
+            {
+                double g = SegmentBoxLocal(la, ld, lo, hi, out t);
+                inRange &= g == 0 || Range.In(g);
+                if (g > 0)
+                {
+                    var e = la + ld * t;
+                    var q = Clamp(e, lo, hi);
+                    double gap = Math.Sqrt(g);
+                    dist = gap - r;
+                    // q − e has the components whose squares summed to g: its length is gap.
+                    var toward = box.ToWorldOffset(q - e) * (1 / gap);
+                    return new DistanceResult3(dist, dist > 0 ? dist * dist : 0, SegmentPoint(a, b, t) + toward * r, box.Origin + box.ToWorldOffset(q), t, 0);
+                }
+                // Apart by the verdict but touching to rounding: the touching branch below.
+            }
+            double depth = Math.Max(0, SegmentBoxPenetration(la - c, ld, h, box.Planar, out var push));
+            Vector3D onAxis, onBox, outward;
+            if (depth > 0)
+            {
+                var moved = la + push;
+                SegmentBoxLocal(moved, ld, lo, hi, out t);
+                onAxis = SegmentPoint(a, b, t);
+                onBox = ClampToBox(box, moved + ld * t);
+                outward = box.ToWorldOffset(push) * (1 / push.Length);
+            }
+            else
+            {
+                SegmentBoxLocal(la, ld, lo, hi, out t);
+                onAxis = onBox = SegmentPoint(a, b, t);
+                outward = PointBox(onAxis, box, out _).Normal;
+            }
+            dist = -depth - r;
+            return new DistanceResult3(dist, dist > 0 ? dist * dist : 0, onAxis - outward * r, onBox, t, 0);
+        }
+
+        /// <summary>Whether a capsule meets a solid box: the axis does (the segment test), or its gap is at most r (as <see cref="CapsuleBox"/> decides).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool CapsuleBoxOverlaps(Vector3D a, Vector3D b, double r, in Box box, out bool inRange)
+        {
+            var ra = a - box.Origin;
+            inRange = Range.Box(Math.Max(Math.Max(Range.MaxAbs(ra), r), Math.Max(Range.MaxAbs(b - box.Origin), Range.MaxAbs(box.Hi - box.Lo))));
+            var la = box.ToLocal(ra);
+            var ld = box.ToLocal(b - a);
+            if (SegmentBoxOverlapsLocal(la - box.LocalCenter, ld, box.Half, box.Planar)) return true;
+            double g = SegmentBoxLocal(la, ld, box.Lo, box.Hi, out _);
+            inRange &= g == 0 || Range.In(g);
+            return Math.Sqrt(g) - r <= 0;
+        }
+    }
+}
