@@ -37,10 +37,10 @@ namespace ProximityLib.Scenes
 
         /// <summary>
         /// A mesh's triangles from its vertices (already in world space) and Mesh.triangles indices (three per
-        /// triangle). Throws <see cref="ArgumentException"/> when the index count is not a multiple of 3 or an index is out
+        /// triangle; arrays, as Unity gives them: Mono's span indexer is not usable from Unity's compiler). Throws <see cref="ArgumentException"/> when the index count is not a multiple of 3 or an index is out
         /// of range.
         /// </summary>
-        public static Triangle3[] Triangles(ReadOnlySpan<Vector3> vertices, ReadOnlySpan<int> indices)
+        public static Triangle3[] Triangles(Vector3[] vertices, int[] indices)
         {
             if (indices.Length % 3 != 0)
                 throw new ArgumentException($"indices must come in threes (got {indices.Length}).", nameof(indices));
