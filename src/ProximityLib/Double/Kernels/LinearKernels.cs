@@ -111,7 +111,7 @@ namespace ProximityLib.Double
             {
                 // n scaled by a power of two so its largest component lies in [1, 2): |n|² stays normal however close
                 // the directions are, and the scaling is exact.
-                double k = InverseMagnitude(m);
+                double k = Num.InversePowerOfTwo(m); // m ≤ 2 here, so its clamp never applies
                 var nk = n * k;
                 double nn = nk.LengthSquared;
                 double si = Vector3D.Dot(Vector3D.Cross(w, dB), nk) / nn * k;
@@ -314,12 +314,6 @@ namespace ProximityLib.Double
             else { min = c; max = c; }
         }
 
-        /// <summary>A power of two k with k·m in [1, 2), for a normal m &gt; 0.</summary>
-        private static double InverseMagnitude(double m)
-        {
-            long exponent = ((BitConverter.DoubleToInt64Bits(m) >> 52) & 0x7FF) - 1023;
-            return BitConverter.Int64BitsToDouble((1023 - exponent) << 52);
-        }
         /// <summary><see cref="Unbounded"/> as a result: the witnesses Origin + t·Direction of each shape.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 UnboundedPair(Vector3D oA, Vector3D dA, bool rayA, Vector3D oB, Vector3D dB, bool rayB, out bool inRange)
