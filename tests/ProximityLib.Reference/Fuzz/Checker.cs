@@ -532,7 +532,12 @@ namespace ProximityReference.Fuzz
             Same("DistanceSquared", ab.D2, r2.D2, 2 * k);
             Same("PointA.X", ab.PA.X, r2.PA.X, k); Same("PointA.Y", ab.PA.Y, r2.PA.Y, k); Same("PointA.Z", ab.PA.Z, r2.PA.Z, k);
             Same("PointB.X", ab.PB.X, r2.PB.X, k); Same("PointB.Y", ab.PB.Y, r2.PB.Y, k); Same("PointB.Z", ab.PB.Z, r2.PB.Z, k);
-            if (!Spec.Bits(ab.TA, r2.TA) || !Spec.Bits(ab.TB, r2.TB)) diffs.Add($"parameters {N(r2.TA)}, {N(r2.TB)} instead of {N(ab.TA)}, {N(ab.TB)}");
+            // A line's or ray's parameter is a length along its unit direction (scales); the others are fractions (do not).
+            bool linA = Kinds.IsLinear(_c.A.Kind), linB = Kinds.IsLinear(_c.B.Kind);
+            if (linA) Same("ParameterA", ab.TA, r2.TA, k);
+            if (linB) Same("ParameterB", ab.TB, r2.TB, k);
+            if ((!linA && !Spec.Bits(ab.TA, r2.TA)) || (!linB && !Spec.Bits(ab.TB, r2.TB)))
+                diffs.Add($"parameters {N(r2.TA)}, {N(r2.TB)} instead of {N(ab.TA)}, {N(ab.TB)}");
             if (o2 != oab) diffs.Add($"Overlaps {o2} instead of {oab}");
             if (diffs.Count > 0) Fail("i 2^k scaling", $"scaling every input by 2^{k} is not exact: {string.Join("; ", diffs)}", code);
         }

@@ -205,7 +205,7 @@ namespace ProximityReference.Fuzz
                     };
                 }
                 default:
-                    if (r.Chance(1.0 / 3)) return Spec.HalfSpaceOffset(dim, length, Vector3D.Dot(c, d));
+                    if (r.Chance(1.0 / 3)) return Spec.HalfSpaceOffset(dim, length, Vector3D.Dot(c, length));
                     return Spec.HalfSpace(dim, c, length);
             }
         }
@@ -404,7 +404,7 @@ namespace ProximityReference.Fuzz
                     case Kind.HalfSpace:
                     {
                         var nrm = w != default ? w : Axis(r, dim) * g;
-                        return r.Chance(0.25) ? Spec.HalfSpaceOffset(dim, nrm, Vector3D.Dot(shared, nrm) / nrm.Length) : Spec.HalfSpace(dim, shared, nrm);
+                        return r.Chance(0.25) ? Spec.HalfSpaceOffset(dim, nrm, Vector3D.Dot(shared, nrm)) : Spec.HalfSpace(dim, shared, nrm);
                     }
                     case Kind.Aabb:
                         return r.Int(3) switch

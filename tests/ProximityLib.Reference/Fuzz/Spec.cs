@@ -109,7 +109,7 @@ namespace ProximityReference.Fuzz
         public static Spec HalfSpace(int dim, Vector3D point, Vector3D normal) =>
             new Spec(Kind.HalfSpace, dim, false, Flat(point, dim), Flat(normal, dim), 0, default, ObbForm.None, Array.Empty<double>());
 
-        /// <summary>A half-space {x : n·x ≤ offset·|normal|} (n the unit normal) through the constructor <c>new HalfSpace(normal, offset)</c>.</summary>
+        /// <summary>A half-space {x : normal·x ≤ offset} (the normal as given) through the constructor <c>new HalfSpace(normal, offset)</c>.</summary>
         public static Spec HalfSpaceOffset(int dim, Vector3D normal, double offset) =>
             new Spec(Kind.HalfSpace, dim, false, default, Flat(normal, dim), offset, default, ObbForm.None, Array.Empty<double>(), true);
 

@@ -18,9 +18,9 @@ namespace ProximityTests.Fuzz
     {
         public const long DefaultSeed = 2026;
         /// <summary>A multiple of 60: every block of 60 consecutive cases covers all 30 pairs in both precisions.</summary>
-        public const long DefaultCases = 240_000;
+        public const long DefaultCases = 120_000;
         /// <summary>A multiple of 160: every block of 160 consecutive new-space cases covers all 80 new pairs in both precisions.</summary>
-        public const long DefaultNewCases = 160_000;
+        public const long DefaultNewCases = 64_000;
 
         private static long Setting(string name, long fallback)
         {
