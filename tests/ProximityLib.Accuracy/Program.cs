@@ -8,11 +8,11 @@ using ProximityReference;
 using ProximityReference.Fuzz;
 
 // Usage: dotnet run --project tests/ProximityLib.Accuracy -c Release -- [--cases N] [--seed S] [--family NAME] [--out FILE]
-//        ... -- --fuzz N [--seed S] [--start I] [--threads T] [--repros R] [--out FILE]
+//        ... -- --fuzz N [--fuzz-new M] [--seed S] [--start I] [--start-new J] [--threads T] [--repros R] [--out FILE]
 //        ... -- --fuzz-replay SEED:INDEX
 CultureInfo.CurrentCulture = CultureInfo.InvariantCulture;
 int cases = 20, seed = 2026;
-long fuzz = 0, start = 0;
+long fuzz = 0, start = 0, fuzzNew = -1, startNew = 0;
 int threads = Environment.ProcessorCount, repros = 20;
 string? output = null, replay = null, only = null;
 try
@@ -27,12 +27,15 @@ try
             case "--family": only = args[++i]; break;
             case "--fuzz": fuzz = long.Parse(args[++i]); break;
             case "--start": start = long.Parse(args[++i]); break;
+            case "--fuzz-new": fuzzNew = long.Parse(args[++i]); break;
+            case "--start-new": startNew = long.Parse(args[++i]); break;
             case "--threads": threads = int.Parse(args[++i]); break;
             case "--repros": repros = int.Parse(args[++i]); break;
             case "--fuzz-replay": replay = args[++i]; break;
             case "--help":
                 Console.WriteLine("accuracy [--cases N (per family parameter, default 20)] [--seed S] [--family NAME (one family only)] [--out docs/accuracy.md]");
                 Console.WriteLine("accuracy --fuzz N [--seed S] [--start I] [--threads T] [--repros R] [--out FILE]   differential fuzz of N cases");
+                Console.WriteLine("         [--fuzz-new M] [--start-new J]   and M cases (default N) of issue 12's pairs, indices 1000000000000 + J …");
                 Console.WriteLine("accuracy --fuzz-replay SEED:INDEX                                                 one fuzz case, every check, repros");
                 return 0;
             default:
@@ -46,9 +49,10 @@ catch (Exception e) when (e is FormatException || e is OverflowException || e is
     Console.Error.WriteLine($"bad option value: {e.Message} (try --help)");
     return 2;
 }
-if (fuzz < 0 || start < 0 || threads < 1 || repros < 0)
+if (fuzzNew < 0) fuzzNew = fuzz;
+if (fuzz < 0 || start < 0 || startNew < 0 || threads < 1 || repros < 0)
 {
-    Console.Error.WriteLine("--fuzz, --start and --repros must not be negative and --threads must be at least 1 (try --help)");
+    Console.Error.WriteLine("--fuzz, --fuzz-new, --start, --start-new and --repros must not be negative and --threads must be at least 1 (try --help)");
     return 2;
 }
 
@@ -65,15 +69,15 @@ if (replay != null)
     return 0;
 }
 
-if (fuzz > 0)
+if (fuzz > 0 || fuzzNew > 0)
 {
-    Console.Error.WriteLine($"fuzz: {fuzz} cases from {start}, seed {seed}, {threads} threads");
+    Console.Error.WriteLine($"fuzz: {fuzz} cases from {start} and {fuzzNew} of issue 12's pairs from {FuzzCase.NewBase + startNew}, seed {seed}, {threads} threads");
     FuzzReport report;
     try
     {
         report = Engine.Run(new FuzzOptions
         {
-            Seed = seed, Start = start, Count = fuzz, Threads = threads,
+            Seed = seed, Start = start, Count = fuzz, NewStart = startNew, NewCount = fuzzNew, Threads = threads,
             Progress = line => Console.Error.WriteLine("  " + line),
         });
     }

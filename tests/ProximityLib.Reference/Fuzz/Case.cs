@@ -26,13 +26,15 @@ namespace ProximityReference.Fuzz
             Seed = seed; Index = index; Generator = generator; Dim = dim; Float = isFloat; A = a; B = b; Rng = rng;
         }
 
-        /// <summary>"3D segment–OBB": the kinds in the fixed order point &lt; segment &lt; sphere &lt; AABB &lt; OBB.</summary>
-        public string Pair => PairName(Dim, A.Kind <= B.Kind ? A : B, A.Kind <= B.Kind ? B : A);
+        /// <summary>"3D segment–OBB": the kinds in the library's pair order (<see cref="Kinds.Rank"/>).</summary>
+        public string Pair => PairName(Dim, First ? A : B, First ? B : A);
+
+        private bool First => Kinds.Rank(A.Kind) <= Kinds.Rank(B.Kind);
         public string PrecisionName => Float ? "float" : "double";
 
         public static string PairName(int dim, Spec a, Spec b) => $"{dim}D {a.KindName}–{b.KindName}";
 
-        /// <summary>The 30 unordered kind pairs: 15 in 3D, then 15 in 2D.</summary>
+        /// <summary>The 30 unordered kind pairs of the original kinds: 15 in 3D, then 15 in 2D (index space 0 ≤ i &lt; <see cref="NewBase"/>).</summary>
         public static readonly (int Dim, Kind A, Kind B)[] Pairs = MakePairs();
 
         private static (int, Kind, Kind)[] MakePairs()
@@ -46,19 +48,108 @@ namespace ProximityReference.Fuzz
         }
 
         /// <summary>
-        /// Case <paramref name="index"/> of run <paramref name="seed"/>: index mod 60 picks the pair (30) and the precision
-        /// (2), so every block of 60 consecutive cases covers all 200 overloads; the pair's generators take turns.
+        /// The first index of the second index space: issue 12's pairs. Indices below it keep the original scheme (the
+        /// 30 pairs above), so CI seeds and recorded repros keep their cases; an index NewBase + k is case k of
+        /// <see cref="NewPairs"/> (replay it as SEED:1000000000000+k).
+        /// </summary>
+        public const long NewBase = 1_000_000_000_000;
+
+        /// <summary>
+        /// Every unordered pair with a line, ray, capsule, triangle or half-space (kinds in the library's pair order),
+        /// 40 in 3D then 40 in 2D: a fixed list, so case k always names the same pair. A pair the library has no public
+        /// overload for yet is skipped (<see cref="Available"/>), so each pair is fuzzed from the commit that adds it.
+        /// </summary>
+        public static readonly (int Dim, Kind A, Kind B)[] NewPairs = MakeNewPairs();
+
+        private static (int, Kind, Kind)[] MakeNewPairs()
+        {
+            var list = new List<(int, Kind, Kind)>();
+            foreach (int dim in new[] { 3, 2 })
+                for (int i = 0; i < Kinds.InOrder.Length; i++)
+                    for (int j = i; j < Kinds.InOrder.Length; j++)
+                    {
+                        Kind a = Kinds.InOrder[i], b = Kinds.InOrder[j];
+                        if (!Kinds.IsOriginal(a) || !Kinds.IsOriginal(b)) list.Add((dim, a, b));
+                    }
+            return list.ToArray();
+        }
+
+        /// <summary>The pair and precision of an index: in the original space index mod 60 picks one of 30 pairs × 2
+        /// precisions; in the new space (index − NewBase) mod 160 one of 80 pairs × 2. Consecutive blocks rotate the generators.</summary>
+        public static (int Dim, Kind A, Kind B, bool Float, long Round) Slot(long index)
+        {
+            if (index < NewBase)
+            {
+                int slot = (int)(index % 60);
+                var (dim, ka, kb) = Pairs[slot % 30];
+                return (dim, ka, kb, slot >= 30, index / 60);
+            }
+            long k = index - NewBase;
+            int n = NewPairs.Length;
+            int s2 = (int)(k % (2 * n));
+            var (d2, a2, b2) = NewPairs[s2 % n];
+            return (d2, a2, b2, s2 >= n, k / (2 * n));
+        }
+
+        /// <summary>
+        /// Case <paramref name="index"/> of run <paramref name="seed"/>: <see cref="Slot"/> picks the pair and the
+        /// precision, so every block of 60 consecutive original cases covers all 200 original overloads and every block
+        /// of 160 new ones every new pair; the pair's generators take turns. Throws for a pair the library lacks
+        /// (<see cref="Available"/>).
         /// </summary>
         public static FuzzCase Create(long seed, long index)
         {
-            int slot = (int)(index % 60);
-            var (dim, ka, kb) = Pairs[slot % 30];
-            bool isFloat = slot >= 30;
+            if (index < 0) throw new ArgumentOutOfRangeException(nameof(index), "case indices are not negative");
+            var (dim, ka, kb, isFloat, round) = Slot(index);
+            if (!Available(dim, ka, kb, isFloat))
+                throw new ArgumentException($"case {seed}:{index} is {dim}D {ka}–{kb} ({(isFloat ? "float" : "double")}), which the library has no public overloads for yet");
             var gens = Generators.For(ka, kb);
-            int g = gens[(int)(index / 60 % gens.Length)];
+            int g = gens[(int)(round % gens.Length)];
             var rng = Rng.ForCase(seed, index);
             var (a, b) = Generators.All[g].Make(rng, ka, kb, dim, isFloat ? Precision.Single : Precision.Double);
             return new FuzzCase(seed, index, Generators.All[g].Name, dim, isFloat, a, b, rng);
+        }
+
+        /// <summary>Is case <paramref name="index"/>'s pair in the library (its Between overloads exist in its precision)?</summary>
+        public static bool Available(long index)
+        {
+            var (dim, ka, kb, isFloat, _) = Slot(index);
+            return Available(dim, ka, kb, isFloat);
+        }
+
+        private static readonly System.Collections.Concurrent.ConcurrentDictionary<(int, Kind, Kind, bool), bool> _available =
+            new System.Collections.Concurrent.ConcurrentDictionary<(int, Kind, Kind, bool), bool>();
+
+        /// <summary>
+        /// Does the public API answer this pair: ClosestDistance.Between, ClosestDistance.Distance and
+        /// ProximityQuery.Overlaps in both argument orders, found by reflection (ProximityLib.Double or, for float,
+        /// ProximityLib)? A pair whose overloads are only partly there counts as present, so the checker reports the gap.
+        /// </summary>
+        public static bool Available(int dim, Kind a, Kind b, bool isFloat) =>
+            _available.GetOrAdd((dim, a, b, isFloat), key => Exists(isFloat ? typeof(ProximityLib.ClosestDistance) : typeof(Dbl.ClosestDistance),
+                "Between", ShapeType(key.Item1, key.Item2, key.Item4), ShapeType(key.Item1, key.Item3, key.Item4)));
+
+        /// <summary>The public overloads of a query method (Between, Distance, Overlaps) for the pair, both orders.</summary>
+        public static bool Exists(Type owner, string method, Type a, Type b) =>
+            owner.GetMethod(method, new[] { a, b }) != null || owner.GetMethod(method, new[] { b, a }) != null;
+
+        /// <summary>The library type of a kind in a dimension and precision.</summary>
+        public static Type ShapeType(int dim, Kind kind, bool isFloat)
+        {
+            var probe = kind switch
+            {
+                Kind.Point => Spec.Point(dim, default),
+                Kind.Segment => Spec.Segment(dim, default, default),
+                Kind.Sphere => Spec.Sphere(dim, default, 0),
+                Kind.Aabb => Spec.Aabb(dim, default, default),
+                Kind.Obb => dim == 3 ? Spec.ObbQuaternion(default, 0, 0, 0, 1, default) : Spec.Obb2Angle(default, 0, default),
+                Kind.Line => Spec.Line(dim, default, Vector3D.UnitX),
+                Kind.Ray => Spec.Ray(dim, default, Vector3D.UnitX),
+                Kind.Capsule => Spec.Capsule(dim, default, default, 0),
+                Kind.Triangle => Spec.Triangle(dim, default, default, default),
+                _ => Spec.HalfSpace(dim, default, Vector3D.UnitX),
+            };
+            return (isFloat ? probe.ToFloat() : probe).Build().GetType();
         }
     }
 

@@ -9,22 +9,29 @@ namespace ProximityReference.Fuzz
     /// A shape exactly as the library stores it (double form, OBB axes as stored), for the fuzz's exact checks: exact
     /// membership, exact support functions, exact points built from parameters (so a candidate point is in the shape by
     /// construction), and a scaled local double copy (relative to an origin, sized ~1) in which candidate parameters
-    /// are searched. A sphere is its center (its core) plus a radius; the other shapes have radius 0.
+    /// are searched. A sphere is its center (its core) plus a radius, a capsule its axis plus a radius; the other shapes
+    /// have radius 0. Lines, rays and half-spaces are unbounded: their support function is +∞ except along the
+    /// directions where it is finite (<see cref="TrySupport"/>), and candidate directions are fitted to those exactly
+    /// (<see cref="Fit"/>).
     /// </summary>
     public sealed class Core
     {
         public Kind Kind { get; }
         public bool Planar { get; }
-        /// <summary>Point; segment start; sphere/OBB center; AABB min.</summary>
+        /// <summary>Point; segment/capsule start; sphere/OBB center; AABB min; line/ray origin; triangle A; half-space point.</summary>
         public Vector3D P { get; }
-        /// <summary>Segment end; AABB max.</summary>
+        /// <summary>Segment/capsule end; AABB max; line/ray direction (as stored); triangle B; half-space normal (as stored).</summary>
         public Vector3D Q { get; }
         public double R { get; }
         public Vector3D[] Axes { get; } = { Vector3D.UnitX, Vector3D.UnitY, Vector3D.UnitZ };
+        /// <summary>OBB half-extents; triangle C.</summary>
         public Vector3D H { get; }
 
-        // Local double copy: (x − origin)·2^−shift.
+        // Local double copy: (x − origin)·2^−shift (directions and normals are not lengths: kept as stored).
         private Vector3D _p, _q, _h;
+        // A half-space's tangents, exactly perpendicular to its stored normal (2D: one), and their local doubles.
+        private DyVec _t1, _t2;
+        private Vector3D _lt1, _lt2;
         private readonly List<Vector3D> _vertices = new List<Vector3D>();
         private readonly List<(Vector3D, Vector3D)> _edges = new List<(Vector3D, Vector3D)>();
 
@@ -34,10 +41,28 @@ namespace ProximityReference.Fuzz
             if (axes != null) Axes = axes;
         }
 
+        /// <summary>The double-API shape a shape of either API holds (what the float API computes on).</summary>
+        public static object DoubleForm(object shape) => shape switch
+        {
+            Vector3D or Vector2D => shape,
+            _ when shape.GetType().Namespace == "ProximityLib.Double" => shape,
+            ProximityLib.Line3 x => (Dbl.Line3)x,
+            ProximityLib.Line2 x => (Dbl.Line2)x,
+            ProximityLib.Ray3 x => (Dbl.Ray3)x,
+            ProximityLib.Ray2 x => (Dbl.Ray2)x,
+            ProximityLib.Capsule3 x => (Dbl.Capsule3)x,
+            ProximityLib.Capsule2 x => (Dbl.Capsule2)x,
+            ProximityLib.Triangle3 x => (Dbl.Triangle3)x,
+            ProximityLib.Triangle2 x => (Dbl.Triangle2)x,
+            ProximityLib.HalfSpace x => (Dbl.HalfSpace)x,
+            ProximityLib.HalfPlane x => (Dbl.HalfPlane)x,
+            _ => Shapes.Widen(shape),
+        };
+
         /// <summary>The core of a library shape of either API (float shapes are taken in the double form they hold).</summary>
         public static Core Of(object shape)
         {
-            if (!(shape is Vector3D || shape is Vector2D || shape.GetType().Namespace == "ProximityLib.Double")) shape = Shapes.Widen(shape);
+            shape = DoubleForm(shape);
             static Vector3D V(Vector2D v) => new Vector3D(v.X, v.Y, 0);
             return shape switch
             {
@@ -52,12 +77,28 @@ namespace ProximityReference.Fuzz
                 Dbl.Obb3 b => new Core(Kind.Obb, false, b.Center, default, 0, new[] { b.AxisX, b.AxisY, b.AxisZ }, b.HalfExtents),
                 Dbl.Obb2 b => new Core(Kind.Obb, true, V(b.Center), default, 0, new[] { V(b.AxisX), V(b.AxisY), Vector3D.UnitZ },
                     new Vector3D(b.HalfExtents.X, b.HalfExtents.Y, 0)),
+                Dbl.Line3 l => new Core(Kind.Line, false, l.Origin, l.Direction, 0, null, default),
+                Dbl.Line2 l => new Core(Kind.Line, true, V(l.Origin), V(l.Direction), 0, null, default),
+                Dbl.Ray3 l => new Core(Kind.Ray, false, l.Origin, l.Direction, 0, null, default),
+                Dbl.Ray2 l => new Core(Kind.Ray, true, V(l.Origin), V(l.Direction), 0, null, default),
+                Dbl.Capsule3 c => new Core(Kind.Capsule, false, c.Start, c.End, c.Radius, null, default),
+                Dbl.Capsule2 c => new Core(Kind.Capsule, true, V(c.Start), V(c.End), c.Radius, null, default),
+                Dbl.Triangle3 t => new Core(Kind.Triangle, false, t.A, t.B, 0, null, t.C),
+                Dbl.Triangle2 t => new Core(Kind.Triangle, true, V(t.A), V(t.B), 0, null, V(t.C)),
+                Dbl.HalfSpace h => new Core(Kind.HalfSpace, false, h.Point, h.Normal, 0, null, default),
+                Dbl.HalfPlane h => new Core(Kind.HalfSpace, true, V(h.Point), V(h.Normal), 0, null, default),
                 _ => throw new ArgumentException(shape.GetType().FullName),
             };
         }
 
-        public bool IsSolid => Kind == Kind.Sphere || Kind == Kind.Aabb || Kind == Kind.Obb;
+        /// <summary>Solids (docs/api.md): sphere/circle, capsule, the 2D triangle, half-space/half-plane, AABB, OBB.</summary>
+        public bool IsSolid => Kind == Kind.Sphere || Kind == Kind.Aabb || Kind == Kind.Obb || Kind == Kind.Capsule
+                               || Kind == Kind.HalfSpace || (Kind == Kind.Triangle && Planar);
         public bool IsBox => Kind == Kind.Aabb || Kind == Kind.Obb;
+        /// <summary>Lines, rays and half-spaces: the support function is +∞ in most directions.</summary>
+        public bool IsUnbounded => Kind == Kind.Line || Kind == Kind.Ray || Kind == Kind.HalfSpace;
+        /// <summary>Shapes with a radius around their core (sphere: its center; capsule: its axis).</summary>
+        public bool IsRounded => Kind == Kind.Sphere || Kind == Kind.Capsule;
 
         /// <summary>Bitwise identity of the stored shapes.</summary>
         public bool SameAs(Core o) =>
@@ -75,8 +116,9 @@ namespace ProximityReference.Fuzz
         {
             switch (Kind)
             {
-                case Kind.Point: case Kind.Sphere: yield return DyVec.From(P); break;
-                case Kind.Segment: yield return DyVec.From(P); yield return DyVec.From(Q); break;
+                case Kind.Point: case Kind.Sphere: case Kind.Line: case Kind.Ray: case Kind.HalfSpace: yield return DyVec.From(P); break;
+                case Kind.Segment: case Kind.Capsule: yield return DyVec.From(P); yield return DyVec.From(Q); break;
+                case Kind.Triangle: yield return DyVec.From(P); yield return DyVec.From(Q); yield return DyVec.From(H); break;
                 case Kind.Aabb:
                     for (int m = 0; m < 8; m++)
                         yield return new DyVec((m & 1) != 0 ? Q.X : P.X, (m & 2) != 0 ? Q.Y : P.Y, (m & 4) != 0 ? Q.Z : P.Z);
@@ -115,7 +157,7 @@ namespace ProximityReference.Fuzz
         {
             var m = Dy.Zero;
             foreach (var p in Defining()) m = Dy.Max(m, Dy.Max(Dy.Abs(p.X), Dy.Max(Dy.Abs(p.Y), Dy.Abs(p.Z))));
-            return Kind == Kind.Sphere ? m + R : m;
+            return IsRounded ? m + R : m;
         }
 
         /// <summary>Squared Euclidean distance from x to the shape (its core expanded by the radius is handled by the caller), exactly.</summary>
@@ -129,6 +171,11 @@ namespace ProximityReference.Fuzz
                     var on = a + (DyVec.From(Q) - a) * t;
                     return (x - on).LengthSquared;
                 case Kind.Sphere: return (x - DyVec.From(P)).LengthSquared;
+                case Kind.Capsule:
+                    var s0 = DyVec.From(P);
+                    return (x - (s0 + (DyVec.From(Q) - s0) * t)).LengthSquared;
+                case Kind.Line: case Kind.Ray: return (x - (DyVec.From(P) + DyVec.From(Q) * t)).LengthSquared;
+                case Kind.Triangle: case Kind.HalfSpace: throw new InvalidOperationException("no exact squared distance for a " + Kind + "; use Contains or Excess");
                 case Kind.Aabb:
                 {
                     var sum = Dy.Zero;
@@ -155,17 +202,162 @@ namespace ProximityReference.Fuzz
             }
         }
 
-        /// <summary>Is x within tol of the shape (for a segment: of its point at parameter t)? Exact.</summary>
+        /// <summary>
+        /// Is x within tol of the shape (for a segment or capsule: of its axis point at parameter t; for a line or ray: of
+        /// Origin + t·Direction with the stored direction)? Exact.
+        /// </summary>
         public bool Contains(DyVec x, double t, Dy tol)
         {
             if (Planar && !x.Z.IsZero) return false;
-            if (Kind == Kind.Segment && !(t >= 0 && t <= 1)) return false;
+            if ((Kind == Kind.Segment || Kind == Kind.Capsule) && !(t >= 0 && t <= 1)) return false;
+            if (Kind == Kind.Line && !double.IsFinite(t)) return false;
+            if (Kind == Kind.Ray && !(t >= 0 && double.IsFinite(t))) return false;
+            if (Kind == Kind.Triangle) return NearTriangle(x, DyVec.From(P), DyVec.From(Q), DyVec.From(H), tol);
+            if (Kind == Kind.HalfSpace)
+            {
+                // n·(x − P) ≤ tol·|n| with the stored (unit to rounding) normal.
+                var n = DyVec.From(Q);
+                var g = DyVec.Dot(n, x - DyVec.From(P));
+                return g.Sign <= 0 || (tol.Sign >= 0 && g.Square() <= tol.Square() * n.LengthSquared);
+            }
             var e2 = ExcessSquared(x, t);
-            return Kind == Kind.Sphere ? DyMath.AtLeastRoot((Dy)R + tol, e2) : DyMath.AtLeastRoot(tol, e2);
+            return IsRounded ? DyMath.AtLeastRoot((Dy)R + tol, e2) : DyMath.AtLeastRoot(tol, e2);
         }
 
-        /// <summary>max over the core of x·n, exactly (the radius is added by the caller).</summary>
-        public Dy Support(DyVec n)
+        /// <summary>How far x lies outside the shape (approximately; for messages), at the parameter t like <see cref="Contains"/>.</summary>
+        public double Excess(DyVec x, double t)
+        {
+            switch (Kind)
+            {
+                case Kind.Triangle:
+                {
+                    DyVec a = DyVec.From(P), b = DyVec.From(Q), c = DyVec.From(H);
+                    var n = Cross(b - a, c - a);
+                    double best = Math.Min(SegmentGap(x, a, b), Math.Min(SegmentGap(x, b, c), SegmentGap(x, c, a)));
+                    if (!n.LengthSquared.IsZero && InsidePrism(x, a, b, c, n))
+                        best = Math.Min(best, Math.Abs(DyVec.Dot(x - a, n).ToDouble()) / DyMath.Sqrt(n.LengthSquared));
+                    return best;
+                }
+                case Kind.HalfSpace:
+                {
+                    var n = DyVec.From(Q);
+                    return Math.Max(0, DyVec.Dot(n, x - DyVec.From(P)).ToDouble() / DyMath.Sqrt(n.LengthSquared));
+                }
+                default:
+                    return DyMath.Sqrt(ExcessSquared(x, t)) - (IsRounded ? R : 0);
+            }
+        }
+
+        private static DyVec Cross(DyVec u, DyVec v) => new DyVec(u.Y * v.Z - u.Z * v.Y, u.Z * v.X - u.X * v.Z, u.X * v.Y - u.Y * v.X);
+
+        /// <summary>Does x project into the triangle's prism (on the inner side of all three edges, n = (b − a) × (c − a) ≠ 0)? Exact.</summary>
+        private static bool InsidePrism(DyVec x, DyVec a, DyVec b, DyVec c, DyVec n) =>
+            DyVec.Dot(Cross(b - a, x - a), n).Sign >= 0 && DyVec.Dot(Cross(c - b, x - b), n).Sign >= 0 && DyVec.Dot(Cross(a - c, x - c), n).Sign >= 0;
+
+        /// <summary>Is x within tol of the segment [a, b] (possibly a point)? Exact, no division.</summary>
+        private static bool NearSegment(DyVec x, DyVec a, DyVec b, Dy tol)
+        {
+            var e = b - a;
+            var w = x - a;
+            var ee = e.LengthSquared;
+            var we = DyVec.Dot(w, e);
+            if (ee.IsZero || we.Sign <= 0) return DyMath.AtLeastRoot(tol, w.LengthSquared);
+            if (we >= ee) return DyMath.AtLeastRoot(tol, (x - b).LengthSquared);
+            // |w|² − (w·e)²/|e|² ≤ tol², times |e|².
+            return tol.Sign >= 0 && w.LengthSquared * ee - we.Square() <= tol.Square() * ee;
+        }
+
+        private static double SegmentGap(DyVec x, DyVec a, DyVec b)
+        {
+            var e = b - a;
+            var w = x - a;
+            var ee = e.LengthSquared;
+            var we = DyVec.Dot(w, e);
+            if (ee.IsZero || we.Sign <= 0) return DyMath.Sqrt(w.LengthSquared);
+            if (we >= ee) return DyMath.Sqrt((x - b).LengthSquared);
+            return DyMath.Sqrt(w.LengthSquared - we.Square() * (Dy)(1 / ee.ToDouble()));
+        }
+
+        /// <summary>
+        /// Is x within tol of the triangle abc (any degenerate one included)? A point whose projection falls inside is at
+        /// |(x − a)·n|/|n| from the plane; otherwise the nearest point is on an edge. In 2D (z = 0) the inside test is
+        /// the solid triangle's containment. Exact.
+        /// </summary>
+        public static bool NearTriangle(DyVec x, DyVec a, DyVec b, DyVec c, Dy tol)
+        {
+            var n = Cross(b - a, c - a);
+            var nn = n.LengthSquared;
+            if (!nn.IsZero && InsidePrism(x, a, b, c, n))
+            {
+                var h = DyVec.Dot(x - a, n);
+                if (h.IsZero || (tol.Sign >= 0 && h.Square() <= tol.Square() * nn)) return true;
+            }
+            return NearSegment(x, a, b, tol) || NearSegment(x, b, c, tol) || NearSegment(x, c, a, tol);
+        }
+
+        /// <summary>max over the core of x·n, exactly (the radius is added by the caller); old kinds only (always finite).</summary>
+        public Dy Support(DyVec n) =>
+            TrySupport(n, out var s) ? s : throw new InvalidOperationException($"the support of a {Kind} along {n.ToDouble()} is +∞");
+
+        /// <summary>
+        /// max over the core of x·n, exactly, when it is finite: a line's only along directions exactly perpendicular to
+        /// it, a ray's where n·Direction ≤ 0, a half-space's only along positive multiples of its normal.
+        /// </summary>
+        public bool TrySupport(DyVec n, out Dy s)
+        {
+            var p = DyVec.From(P);
+            switch (Kind)
+            {
+                case Kind.Line:
+                {
+                    s = DyVec.Dot(p, n);
+                    return DyVec.Dot(DyVec.From(Q), n).IsZero;
+                }
+                case Kind.Ray:
+                {
+                    s = DyVec.Dot(p, n);
+                    return DyVec.Dot(DyVec.From(Q), n).Sign <= 0;
+                }
+                case Kind.HalfSpace:
+                {
+                    var normal = DyVec.From(Q);
+                    s = DyVec.Dot(p, n);
+                    var c = Cross(n, normal);
+                    return c.X.IsZero && c.Y.IsZero && c.Z.IsZero && DyVec.Dot(n, normal).Sign > 0;
+                }
+                case Kind.Triangle:
+                    s = Dy.Max(DyVec.Dot(p, n), Dy.Max(DyVec.Dot(DyVec.From(Q), n), DyVec.Dot(DyVec.From(H), n)));
+                    return true;
+                case Kind.Capsule:
+                    s = Dy.Max(DyVec.Dot(p, n), DyVec.Dot(DyVec.From(Q), n));
+                    return true;
+                default:
+                    s = OldSupport(n);
+                    return true;
+            }
+        }
+
+        /// <summary>
+        /// Fits a direction n so that this shape's support along sign·n can be finite: a half-space replaces it by its
+        /// normal (times sign), a line projects it exactly onto the plane perpendicular to it, a ray does so only when
+        /// sign·n points along it. Bounded shapes leave n alone. The result is exact (no rounding), possibly zero.
+        /// </summary>
+        public DyVec Fit(DyVec n, int sign)
+        {
+            var d = DyVec.From(Q);
+            switch (Kind)
+            {
+                case Kind.HalfSpace: return sign > 0 ? d : -d;
+                case Kind.Line: return Perpendicular(n, d);
+                case Kind.Ray: return (DyVec.Dot(n, d) * sign).Sign > 0 ? Perpendicular(n, d) : n;
+                default: return n;
+            }
+        }
+
+        /// <summary>n − d·(n·d)/(d·d), times d·d: exactly perpendicular to d.</summary>
+        private static DyVec Perpendicular(DyVec n, DyVec d) => n * d.LengthSquared - d * DyVec.Dot(n, d);
+
+        private Dy OldSupport(DyVec n)
         {
             switch (Kind)
             {
@@ -195,10 +387,31 @@ namespace ProximityReference.Fuzz
             switch (Kind)
             {
                 case Kind.Point: case Kind.Sphere: return DyVec.From(P);
-                case Kind.Segment:
+                case Kind.Segment: case Kind.Capsule:
                     double t = Math.Min(Math.Max(param.X, 0), 1);
                     var a = DyVec.From(P);
                     return a + (DyVec.From(Q) - a) * t;
+                case Kind.Line: case Kind.Ray:
+                {
+                    double lt = Kind == Kind.Ray ? Math.Max(param.X, 0) : param.X;
+                    return DyVec.From(P) + DyVec.From(Q) * Dy.From(lt).Times2(f.Shift);
+                }
+                case Kind.Triangle:
+                {
+                    // Barycentric (u, v) clamped exactly into u, v ≥ 0, u + v ≤ 1.
+                    Dy u = Dy.Max(Dy.From(param.X), Dy.Zero), v = Dy.Max(Dy.From(param.Y), Dy.Zero), one = Dy.From(1);
+                    if (u > one) { u = one; v = Dy.Zero; }
+                    else if (u + v > one) v = one - u;
+                    var a0 = DyVec.From(P);
+                    return a0 + (DyVec.From(Q) - a0) * u + (DyVec.From(H) - a0) * v;
+                }
+                case Kind.HalfSpace:
+                {
+                    // P + u·T1 + v·T2 − w·N with T1, T2 exactly perpendicular to N and w ≥ 0: in the half-space exactly.
+                    var w = Dy.Max(Dy.From(param.Z), Dy.Zero);
+                    var local = _t1 * Dy.From(param.X) + _t2 * Dy.From(param.Y) - DyVec.From(Q) * w;
+                    return DyVec.From(P) + local.Times2(f.Shift);
+                }
                 case Kind.Aabb:
                 {
                     var g = f.ToGlobal(param);
@@ -228,12 +441,41 @@ namespace ProximityReference.Fuzz
             _vertices.Clear();
             _edges.Clear();
             _p = f.ToLocal(DyVec.From(P));
-            _q = Kind == Kind.Segment || Kind == Kind.Aabb ? f.ToLocal(DyVec.From(Q)) : default;
-            _h = f.LengthToLocal(H);
+            _q = Kind == Kind.Segment || Kind == Kind.Aabb || Kind == Kind.Capsule || Kind == Kind.Triangle ? f.ToLocal(DyVec.From(Q))
+                : Kinds.IsLinear(Kind) || Kind == Kind.HalfSpace ? Q : default;
+            _h = Kind == Kind.Triangle ? f.ToLocal(DyVec.From(H)) : f.LengthToLocal(H);
             switch (Kind)
             {
                 case Kind.Point: case Kind.Sphere: _vertices.Add(_p); _edges.Add((_p, _p)); break;
-                case Kind.Segment: _vertices.Add(_p); _vertices.Add(_q); _edges.Add((_p, _q)); break;
+                case Kind.Segment: case Kind.Capsule: _vertices.Add(_p); _vertices.Add(_q); _edges.Add((_p, _q)); break;
+                case Kind.Line: case Kind.Ray:
+                    // A long stretch of the line (the configuration is ~1 in local units) for the edge–edge candidates.
+                    _vertices.Add(_p);
+                    _edges.Add((Kind == Kind.Ray ? _p : _p - _q * Reach, _p + _q * Reach));
+                    break;
+                case Kind.Triangle:
+                    _vertices.Add(_p); _vertices.Add(_q); _vertices.Add(_h);
+                    _edges.Add((_p, _q)); _edges.Add((_q, _h)); _edges.Add((_h, _p));
+                    break;
+                case Kind.HalfSpace:
+                {
+                    var normal = DyVec.From(Q);
+                    if (Planar) { _t1 = new DyVec(-normal.Y, normal.X, Dy.Zero); _t2 = default; }
+                    else
+                    {
+                        // The axis least aligned with n gives a well-conditioned first tangent.
+                        var e = Math.Abs(Q.X) <= Math.Abs(Q.Y) && Math.Abs(Q.X) <= Math.Abs(Q.Z) ? Vector3D.UnitX
+                            : Math.Abs(Q.Y) <= Math.Abs(Q.Z) ? Vector3D.UnitY : Vector3D.UnitZ;
+                        _t1 = Cross(normal, DyVec.From(e));
+                        _t2 = Cross(normal, _t1);
+                    }
+                    _lt1 = _t1.ToDouble();
+                    _lt2 = _t2.ToDouble();
+                    _vertices.Add(_p);
+                    _edges.Add((_p - _lt1 * Reach, _p + _lt1 * Reach));
+                    if (!Planar) _edges.Add((_p - _lt2 * Reach, _p + _lt2 * Reach));
+                    break;
+                }
                 default:
                     int n = Planar ? 2 : 3;
                     for (int m = 0; m < (1 << n); m++) _vertices.Add(LocalPoint(Corner(m)));
@@ -251,14 +493,24 @@ namespace ProximityReference.Fuzz
             return new Vector3D((m & 1) != 0 ? hi.X : lo.X, (m & 2) != 0 ? hi.Y : lo.Y, (m & 4) != 0 ? hi.Z : lo.Z);
         }
 
+        /// <summary>How far (local units) the line, ray and half-space stand-in edges reach from the origin or point.</summary>
+        private const double Reach = 16;
+
         public IReadOnlyList<Vector3D> LocalVertices => _vertices;
         public IReadOnlyList<(Vector3D A, Vector3D B)> LocalEdges => _edges;
 
-        /// <summary>Local point of a parameter (segment: t; AABB: the local point; OBB: box-frame coordinates).</summary>
+        /// <summary>
+        /// Local point of a parameter (segment, capsule: t; line, ray: t in local units; triangle: barycentric (u, v);
+        /// half-space: tangent coordinates and depth (u, v, w); AABB: the local point; OBB: box-frame coordinates).
+        /// </summary>
         public Vector3D LocalPoint(Vector3D param) => Kind switch
         {
             Kind.Point or Kind.Sphere => _p,
-            Kind.Segment => _p + (_q - _p) * Math.Min(Math.Max(param.X, 0), 1),
+            Kind.Segment or Kind.Capsule => _p + (_q - _p) * Math.Min(Math.Max(param.X, 0), 1),
+            Kind.Line => _p + _q * param.X,
+            Kind.Ray => _p + _q * Math.Max(param.X, 0),
+            Kind.Triangle => TrianglePoint(param),
+            Kind.HalfSpace => _p + _lt1 * param.X + _lt2 * param.Y - _q * Math.Max(param.Z, 0),
             Kind.Aabb => param,
             _ => _p + Axes[0] * param.X + Axes[1] * param.Y + Axes[2] * param.Z,
         };
@@ -269,7 +521,23 @@ namespace ProximityReference.Fuzz
             switch (Kind)
             {
                 case Kind.Point: case Kind.Sphere: return default;
-                case Kind.Segment:
+                case Kind.Line: case Kind.Ray:
+                {
+                    double lt = Vector3D.Dot(y - _p, _q) / _q.LengthSquared;
+                    if (!double.IsFinite(lt)) lt = 0;
+                    return new Vector3D(Kind == Kind.Ray ? Math.Max(lt, 0) : lt, 0, 0);
+                }
+                case Kind.Triangle: return ProjectTriangle(y);
+                case Kind.HalfSpace:
+                {
+                    var w0 = y - _p;
+                    double depth = -Vector3D.Dot(w0, _q) / _q.LengthSquared;
+                    double u = Vector3D.Dot(w0, _lt1) / _lt1.LengthSquared;
+                    double v = Planar ? 0 : Vector3D.Dot(w0, _lt2) / _lt2.LengthSquared;
+                    static double F(double x) => double.IsFinite(x) ? x : 0;
+                    return new Vector3D(F(u), F(v), F(Math.Max(depth, 0)));
+                }
+                case Kind.Segment: case Kind.Capsule:
                     var d = _q - _p;
                     double dd = d.LengthSquared;
                     double t = dd > 0 ? Vector3D.Dot(y - _p, d) / dd : 0;
@@ -284,25 +552,76 @@ namespace ProximityReference.Fuzz
             }
         }
 
+        private Vector3D TrianglePoint(Vector3D param)
+        {
+            double u = Math.Max(param.X, 0), v = Math.Max(param.Y, 0);
+            if (u + v > 1) { double s = u + v; u /= s; v /= s; }
+            return _p + (_q - _p) * u + (_h - _p) * v;
+        }
+
+        /// <summary>Barycentric (u, v) of the local triangle's point nearest y: the plane projection when inside, else the best edge point.</summary>
+        private Vector3D ProjectTriangle(Vector3D y)
+        {
+            Vector3D e0 = _q - _p, e1 = _h - _p, w = y - _p;
+            double d00 = Vector3D.Dot(e0, e0), d01 = Vector3D.Dot(e0, e1), d11 = Vector3D.Dot(e1, e1);
+            double d20 = Vector3D.Dot(w, e0), d21 = Vector3D.Dot(w, e1), den = d00 * d11 - d01 * d01;
+            if (den > 1e-30 * d00 * d11)
+            {
+                double u = (d11 * d20 - d01 * d21) / den, v = (d00 * d21 - d01 * d20) / den;
+                if (u >= 0 && v >= 0 && u + v <= 1) return new Vector3D(u, v, 0);
+            }
+            static double T(Vector3D a, Vector3D b, Vector3D x)
+            {
+                var e = b - a;
+                double t = Vector3D.Dot(x - a, e) / e.LengthSquared;
+                return double.IsFinite(t) ? Math.Min(Math.Max(t, 0), 1) : 0;
+            }
+            double tab = T(_p, _q, y), tac = T(_p, _h, y), tbc = T(_q, _h, y);
+            var best = new Vector3D(tab, 0, 0);
+            double bd = (y - (_p + e0 * tab)).LengthSquared;
+            double dac = (y - (_p + e1 * tac)).LengthSquared;
+            if (dac < bd) { bd = dac; best = new Vector3D(0, tac, 0); }
+            if ((y - (_q + (_h - _q) * tbc)).LengthSquared < bd) best = new Vector3D(1 - tbc, tbc, 0);
+            return best;
+        }
+
         /// <summary>A random parameter of the shape.</summary>
         public Vector3D RandomParam(Rng rng)
         {
             switch (Kind)
             {
                 case Kind.Segment: return new Vector3D(rng.Unit(), 0, 0);
+                case Kind.Capsule: return new Vector3D(rng.Unit(), 0, 0);
+                case Kind.Line: return new Vector3D(rng.Range(-2, 2), 0, 0);
+                case Kind.Ray: return new Vector3D(rng.Range(0, 3), 0, 0);
+                case Kind.Triangle: { double u = rng.Unit(); return new Vector3D(u, rng.Unit() * (1 - u), 0); }
+                case Kind.HalfSpace: return new Vector3D(rng.Range(-2, 2), rng.Range(-2, 2), rng.Range(0, 1));
                 case Kind.Aabb: return new Vector3D(rng.Range(_p.X, _q.X), rng.Range(_p.Y, _q.Y), rng.Range(_p.Z, _q.Z));
                 case Kind.Obb: return new Vector3D(rng.Range(-_h.X, _h.X), rng.Range(-_h.Y, _h.Y), rng.Range(-_h.Z, _h.Z));
                 default: return default;
             }
         }
 
-        /// <summary>Edge directions, exactly: the segment's end − start, the box axes with non-zero extent.</summary>
+        /// <summary>
+        /// Edge directions, exactly: the segment's (capsule axis's) end − start, a line's or ray's direction, a triangle's
+        /// edges and (3D) its normal, the box axes with non-zero extent. A half-space has none (its normal is imposed by
+        /// <see cref="Fit"/>).
+        /// </summary>
         public IEnumerable<DyVec> Directions()
         {
-            if (Kind == Kind.Segment)
+            if (Kind == Kind.Segment || Kind == Kind.Capsule)
             {
                 var d = DyVec.From(Q) - DyVec.From(P);
                 if (!d.LengthSquared.IsZero) yield return d;
+            }
+            if (Kinds.IsLinear(Kind)) yield return DyVec.From(Q);
+            if (Kind == Kind.Triangle)
+            {
+                DyVec a = DyVec.From(P), b = DyVec.From(Q), c = DyVec.From(H);
+                foreach (var e in new[] { b - a, c - b, a - c })
+                    if (!e.LengthSquared.IsZero) yield return e;
+                var n = Cross(b - a, c - a);
+                if (!Planar && !n.LengthSquared.IsZero) yield return n;
             }
             if (IsBox)
                 for (int i = 0; i < (Planar ? 2 : 3); i++)
@@ -314,8 +633,10 @@ namespace ProximityReference.Fuzz
         {
             switch (Kind)
             {
-                case Kind.Point: case Kind.Sphere: return Vector3D.Dot(_p, n);
-                case Kind.Segment: return Math.Max(Vector3D.Dot(_p, n), Vector3D.Dot(_q, n));
+                // Unbounded shapes: the direction is fitted (Fit), so the support is at the origin or boundary point.
+                case Kind.Point: case Kind.Sphere: case Kind.Line: case Kind.Ray: case Kind.HalfSpace: return Vector3D.Dot(_p, n);
+                case Kind.Segment: case Kind.Capsule: return Math.Max(Vector3D.Dot(_p, n), Vector3D.Dot(_q, n));
+                case Kind.Triangle: return Math.Max(Vector3D.Dot(_p, n), Math.Max(Vector3D.Dot(_q, n), Vector3D.Dot(_h, n)));
                 case Kind.Aabb:
                     return (n.X >= 0 ? _q.X : _p.X) * n.X + (n.Y >= 0 ? _q.Y : _p.Y) * n.Y + (n.Z >= 0 ? _q.Z : _p.Z) * n.Z;
                 default:

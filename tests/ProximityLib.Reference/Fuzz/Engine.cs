@@ -13,6 +13,9 @@ namespace ProximityReference.Fuzz
         public long Seed { get; set; } = 1;
         public long Start { get; set; }
         public long Count { get; set; } = 6000;
+        /// <summary>Cases of the second index space (issue 12's pairs): FuzzCase.NewBase + NewStart, … (0: none).</summary>
+        public long NewStart { get; set; }
+        public long NewCount { get; set; }
         public int Threads { get; set; } = Environment.ProcessorCount;
         /// <summary>Called every few seconds with a progress line.</summary>
         public Action<string>? Progress { get; set; }
@@ -24,7 +27,12 @@ namespace ProximityReference.Fuzz
     {
         public long Seed { get; init; }
         public long Start { get; init; }
+        /// <summary>The index ranges run, as text (set by <see cref="Engine.Run"/>).</summary>
+        public string Ranges { get; set; } = "";
         public long Cases { get; set; }
+        /// <summary>Cases of pairs the library has no public overloads for yet (not generated, not checked).</summary>
+        public long Skipped { get; set; }
+        public SortedSet<string> SkippedPairs { get; } = new SortedSet<string>(StringComparer.Ordinal);
         public long ExactCases { get; set; }
         public long FailedCases { get; set; }
         public TimeSpan Elapsed { get; set; }
@@ -55,6 +63,8 @@ namespace ProximityReference.Fuzz
         public void Merge(FuzzReport o)
         {
             Cases += o.Cases;
+            Skipped += o.Skipped;
+            SkippedPairs.UnionWith(o.SkippedPairs);
             ExactCases += o.ExactCases;
             FailedCases += o.FailedCases;
             foreach (var kv in o.Ran) Ran[kv.Key] = Ran.GetValueOrDefault(kv.Key) + kv.Value;
@@ -74,8 +84,12 @@ namespace ProximityReference.Fuzz
         public string Format(int repros, int rows = int.MaxValue)
         {
             var sb = new StringBuilder();
-            sb.AppendLine($"Fuzz: seed {Seed}, cases {Start}..{Start + Cases - 1} ({Cases} cases, {ExactCases} against the exact reference) " +
-                          $"in {Elapsed.TotalSeconds:F1} s; {CasesPerPair.Values.DefaultIfEmpty().Min()}–{CasesPerPair.Values.DefaultIfEmpty().Max()} cases per pair and precision.");
+            string ranges = Ranges.Length > 0 ? Ranges : $"{Start}..{Start + Cases - 1}";
+            sb.AppendLine($"Fuzz: seed {Seed}, cases {ranges} ({Cases} cases, {ExactCases} against the exact reference) " +
+                          $"in {Elapsed.TotalSeconds:F1} s; {CasesPerPair.Values.DefaultIfEmpty().Min()}–{CasesPerPair.Values.DefaultIfEmpty().Max()} cases per pair and precision " +
+                          $"({CasesPerPair.Count} pairs and precisions).");
+            if (Skipped > 0)
+                sb.AppendLine($"Skipped {Skipped} cases of {SkippedPairs.Count} pairs and precisions the library has no overloads for yet: {string.Join(", ", SkippedPairs)}.");
             sb.AppendLine("Cases per optional check: " + string.Join(", ", Ran.OrderBy(kv => kv.Key).Select(kv => $"{kv.Key} {kv.Value}")) + ".");
             if (Failures.Count == 0)
             {
@@ -120,7 +134,8 @@ namespace ProximityReference.Fuzz
         /// </summary>
         public static int ExactEvery(FuzzCase c)
         {
-            int boxes = (c.A.Kind >= Kind.Aabb ? 1 : 0) + (c.B.Kind >= Kind.Aabb ? 1 : 0);
+            static bool Polytope(Kind k) => k == Kind.Aabb || k == Kind.Obb || k == Kind.Triangle;
+            int boxes = (Polytope(c.A.Kind) ? 1 : 0) + (Polytope(c.B.Kind) ? 1 : 0);
             return boxes == 0 ? 1 : boxes == 1 ? 8 : 40;
         }
 
@@ -129,9 +144,16 @@ namespace ProximityReference.Fuzz
         public static FuzzReport Run(FuzzOptions o)
         {
             var total = new FuzzReport { Seed = o.Seed, Start = o.Start };
+            var ranges = new List<string>();
+            if (o.Count > 0) ranges.Add($"{o.Start}..{o.Start + o.Count - 1}");
+            if (o.NewCount > 0) ranges.Add($"{FuzzCase.NewBase + o.NewStart}..{FuzzCase.NewBase + o.NewStart + o.NewCount - 1}");
+            total.Ranges = string.Join(" and ", ranges);
             var clock = Stopwatch.StartNew();
             const int chunk = 60;
-            long chunks = (o.Count + chunk - 1) / chunk, next = -1, done = 0;
+            // Chunks of the original space, then of the new one (chunk k ≥ oldChunks starts at NewBase + NewStart).
+            long oldChunks = (o.Count + chunk - 1) / chunk;
+            long chunks = oldChunks + (o.NewCount + chunk - 1) / chunk, next = -1, done = 0;
+            long all = o.Count + o.NewCount;
             var gate = new object();
             var lastProgress = clock.Elapsed;
             var workers = Enumerable.Range(0, Math.Max(1, o.Threads)).Select(_ => Task.Factory.StartNew(() =>
@@ -141,9 +163,23 @@ namespace ProximityReference.Fuzz
                 {
                     long k = Interlocked.Increment(ref next);
                     if (k >= chunks) break;
-                    long from = o.Start + k * chunk, to = Math.Min(o.Start + o.Count, from + chunk);
+                    long from, to;
+                    if (k < oldChunks) { from = o.Start + k * chunk; to = Math.Min(o.Start + o.Count, from + chunk); }
+                    else
+                    {
+                        long first = FuzzCase.NewBase + o.NewStart;
+                        from = first + (k - oldChunks) * chunk;
+                        to = Math.Min(first + o.NewCount, from + chunk);
+                    }
                     for (long i = from; i < to; i++)
                     {
+                        if (!FuzzCase.Available(i))
+                        {
+                            var (dim, ka, kb, isFloat, _) = FuzzCase.Slot(i);
+                            local.Skipped++;
+                            local.SkippedPairs.Add($"{dim}D {ka}–{kb} {(isFloat ? "float" : "double")}");
+                            continue;
+                        }
                         var c = FuzzCase.Create(o.Seed, i);
                         bool exact = IsExact(c);
                         List<Failure> fails;
@@ -160,8 +196,8 @@ namespace ProximityReference.Fuzz
                             {
                                 lastProgress = clock.Elapsed;
                                 double rate = d / clock.Elapsed.TotalSeconds;
-                                lock (total) o.Progress($"{d}/{o.Count} cases ({100.0 * d / o.Count:F1}%), {rate:F0} cases/s, " +
-                                    $"about {(o.Count - d) / Math.Max(rate, 1e-9):F0} s left; {total.FailedCases + local.FailedCases}+ failing cases so far");
+                                lock (total) o.Progress($"{d}/{all} cases ({100.0 * d / all:F1}%), {rate:F0} cases/s, " +
+                                    $"about {(all - d) / Math.Max(rate, 1e-9):F0} s left; {total.FailedCases + local.FailedCases}+ failing cases so far");
                             }
                         }
                 }

@@ -47,6 +47,11 @@ namespace ProximityReference.Fuzz
             ("nearly-parallel", NearlyParallel, (a, b) => Edged(a) && Edged(b) && !(a == Kind.Aabb && b == Kind.Aabb)),
             ("collinear", Collinear, (a, b) => (a == Kind.Point && b == Kind.Segment) || (Edged(a) && Edged(b))),
             ("rotations", Rotations, (a, b) => b == Kind.Obb && (a == Kind.Aabb || a == Kind.Obb)),
+            // Issue 12's hard cases (appended: the original pairs' generator lists are unchanged).
+            ("grazing", Grazing, (a, b) => !Kinds.IsOriginal(a) || !Kinds.IsOriginal(b)),
+            ("parallel", Parallel, (a, b) => !Kinds.IsOriginal(a) || !Kinds.IsOriginal(b)),
+            ("slivers", Slivers, (a, b) => a == Kind.Triangle || b == Kind.Triangle),
+            ("far-along", FarAlong, (a, b) => Kinds.IsLinear(a) || Kinds.IsLinear(b)),
         };
 
         private static bool Edged(Kind k) => k == Kind.Segment || k == Kind.Aabb || k == Kind.Obb;
@@ -160,10 +165,52 @@ namespace ProximityReference.Fuzz
                 case Kind.Aabb:
                     var h = Extents(r, dim, size, degenerate);
                     return Spec.Aabb(dim, c - h, c + h);
+                case Kind.Line: case Kind.Ray: case Kind.Capsule: case Kind.Triangle: case Kind.HalfSpace:
+                    return RandomNewShape(r, kind, dim, c, size, degenerate);
                 default:
                     return Obb(r, dim, c, Extents(r, dim, size, degenerate), RandomQuaternion(r), r.Range(0, 2 * Math.PI));
             }
         }
+
+        /// <summary>
+        /// A random line (origin near c), ray (passing near c), capsule, triangle or half-space (boundary through c; one
+        /// in three in the offset form) at the given size; degenerate ones are axis-aligned lines and rays, capsules with
+        /// a zero axis or radius, collinear or coincident triangles. Normals and directions get random lengths (the
+        /// constructors normalise them).
+        /// </summary>
+        private static Spec RandomNewShape(Rng r, Kind kind, int dim, Vector3D c, double size, bool degenerate)
+        {
+            var d = degenerate ? Axis(r, dim) * r.Sign() : Dir(r, dim);
+            var length = d * r.Pow2(-8, 8);
+            switch (kind)
+            {
+                case Kind.Line: return Spec.Line(dim, c + d * (size * r.Range(-2, 2)), length);
+                case Kind.Ray: return Spec.Ray(dim, c - d * (size * r.Range(-0.5, 2)), length);
+                case Kind.Capsule:
+                {
+                    var w = degenerate && r.Chance(0.5) ? default : Dir(r, dim) * (size * r.Range(0.2, 2));
+                    var a = c - w * r.Unit();
+                    return Spec.Capsule(dim, a, a + w, degenerate && w != default ? 0 : size * r.Range(0.05, 1));
+                }
+                case Kind.Triangle:
+                {
+                    var a = c + U3(r, 1, dim) * size;
+                    var b = c + U3(r, 1, dim) * size;
+                    if (!degenerate) return Spec.Triangle(dim, a, b, c + U3(r, 1, dim) * size);
+                    return r.Int(3) switch
+                    {
+                        0 => Spec.Triangle(dim, a, b, a + (b - a) * r.Range(-1, 2)),
+                        1 => Spec.Triangle(dim, a, a, b),
+                        _ => Spec.Triangle(dim, a, a, a),
+                    };
+                }
+                default:
+                    if (r.Chance(1.0 / 3)) return Spec.HalfSpaceOffset(dim, length, Vector3D.Dot(c, length));
+                    return Spec.HalfSpace(dim, c, length);
+            }
+        }
+
+        private static Vector3D Axis(Rng r, int dim) => r.Int(dim) switch { 0 => Vector3D.UnitX, 1 => Vector3D.UnitY, _ => Vector3D.UnitZ };
 
         private static (Spec, Spec) Finish(Spec a, Spec b, Precision p) => p.Float ? (a.ToFloat(), b.ToFloat()) : (a, b);
 
@@ -192,6 +239,23 @@ namespace ProximityReference.Fuzz
                 case Kind.Point: return c.P;
                 case Kind.Segment: return c.P + (c.Q - c.P) * r.Unit();
                 case Kind.Sphere: return c.P + Dir(r, c.Planar ? 2 : 3) * c.R;
+                case Kind.Line: case Kind.Ray:
+                {
+                    double scale = Math.Max(Math.Abs(c.P.X), Math.Max(Math.Abs(c.P.Y), Math.Abs(c.P.Z)));
+                    return c.P + c.Q * (r.Range(c.Kind == Kind.Ray ? 0 : -1, 1) * (scale > 0 ? scale : 1));
+                }
+                case Kind.Capsule: return c.P + (c.Q - c.P) * r.Range(-0.2, 1.2) + Dir(r, c.Planar ? 2 : 3) * c.R;
+                case Kind.Triangle:
+                {
+                    double u = r.Unit(), v = r.Unit() * (1 - u);
+                    if (c.Planar || r.Chance(0.3)) v = 1 - u;
+                    return c.P + (c.Q - c.P) * u + (c.H - c.P) * v;
+                }
+                case Kind.HalfSpace:
+                {
+                    double scale = Math.Max(Math.Abs(c.P.X), Math.Max(Math.Abs(c.P.Y), Math.Abs(c.P.Z)));
+                    return c.P + Perp(r, c.Q, c.Planar ? 2 : 3) * (r.Range(-1, 1) * (scale > 0 ? scale : 1));
+                }
                 case Kind.Aabb:
                 {
                     var x = new[] { r.Range(c.P.X, c.Q.X), r.Range(c.P.Y, c.Q.Y), r.Range(c.P.Z, c.Q.Z) };
@@ -308,6 +372,40 @@ namespace ProximityReference.Fuzz
                         var axis = r.Pick(Vector3D.UnitX, Vector3D.UnitY, dim == 3 ? Vector3D.UnitZ : Vector3D.UnitX) * r.Sign();
                         return Spec.Sphere(dim, shared + axis * radius, radius);
                     }
+                    case Kind.Line: case Kind.Ray:
+                    {
+                        var d = w != default ? w : Axis(r, dim) * g;
+                        var o = r.Chance(0.6) ? shared : shared - d * r.Int(0, 3);
+                        return k == Kind.Line ? Spec.Line(dim, o, d) : Spec.Ray(dim, o, d * r.Sign());
+                    }
+                    case Kind.Capsule:
+                    {
+                        double radius = r.Chance(0.4) ? 0 : r.Int(1, 6) * g;
+                        return r.Int(4) switch
+                        {
+                            0 => Spec.Capsule(dim, shared, shared, radius),
+                            1 => Spec.Capsule(dim, shared, shared + w, radius),
+                            2 => Spec.Capsule(dim, shared + w, shared, radius),
+                            _ => Spec.Capsule(dim, shared - w, shared + w, radius),
+                        };
+                    }
+                    case Kind.Triangle:
+                    {
+                        var w2 = Grid(r, 6, g, dim);
+                        return r.Int(5) switch
+                        {
+                            0 => Spec.Triangle(dim, shared, shared, shared),
+                            1 => Spec.Triangle(dim, shared, shared, shared + w),
+                            2 => Spec.Triangle(dim, shared - w, shared, shared + w * r.Int(-2, 3)),
+                            3 => Spec.Triangle(dim, shared + w, shared + w2, shared),
+                            _ => Spec.Triangle(dim, shared, shared + w, shared + w2),
+                        };
+                    }
+                    case Kind.HalfSpace:
+                    {
+                        var nrm = w != default ? w : Axis(r, dim) * g;
+                        return r.Chance(0.25) ? Spec.HalfSpaceOffset(dim, nrm, Vector3D.Dot(shared, nrm)) : Spec.HalfSpace(dim, shared, nrm);
+                    }
                     case Kind.Aabb:
                         return r.Int(3) switch
                         {
@@ -345,6 +443,7 @@ namespace ProximityReference.Fuzz
         /// </summary>
         private static (Spec, Spec) Touching(Rng r, Kind ka, Kind kb, int dim, Precision p)
         {
+            if (!Kinds.IsOriginal(ka) || !Kinds.IsOriginal(kb)) return Contact(r, ka, kb, dim, p, exact: r.Chance(0.75), offset: false, parallel: false);
             double s = Math.Pow(2, p.Float ? r.Int(-10, 10) : r.Int(-30, 30)), g = s / 4;
             bool hostIsA = r.Chance(0.5);
             Kind hostKind = hostIsA ? ka : kb, guestKind = hostIsA ? kb : ka;
@@ -791,6 +890,282 @@ namespace ProximityReference.Fuzz
                 : Spec.Obb2Angle(cb, p.Float ? delta * r.Sign() : angleB, hb);
             if (ka == kb && r.Chance(0.5)) (a, b) = (b, a);
             return Finish(a, b, p);
+        }
+        // ---- issue 12: contacts between any two kinds ------------------------------------------------------------------
+
+        /// <summary>
+        /// A host of the kind with a contact point on its boundary and an outward normal n (the host lies in
+        /// (x − contact)·n ≤ 0): exact (grid coordinates, n an axis, box axes signed permutations) or general (random
+        /// rotation, touching to rounding). Boxes touch at a face, an edge or a vertex (a general n at an edge or vertex is
+        /// a supporting plane through it); capsules on their side or a cap; triangles at a vertex, or (3D) lying in the
+        /// plane around the contact.
+        /// </summary>
+        private static (Spec Host, Vector3D Contact, Vector3D N) HostContact(Rng r, Kind kind, int dim, double s, double g, bool exact)
+        {
+            var n = exact ? Axis(r, dim) * r.Sign() : Dir(r, dim);
+            var c = exact ? Grid(r, 8, g, dim) : U3(r, 1, dim) * s;
+            Vector3D W() => exact ? Grid(r, 6, g, dim) : U3(r, 1.5, dim) * s;
+            Vector3D Inward() => -Side(W(), n, exact);
+            Vector3D Along() => NonZero(r, Flat(W(), n, exact), n, dim, exact, g);
+            double Radius() => exact ? r.Int(0, 6) * g : s * r.Range(0.05, 1);
+            switch (kind)
+            {
+                case Kind.Point: return (Spec.Point(dim, c), c, n);
+                case Kind.Segment:
+                    if (r.Chance(0.5)) { var f = Flat(W(), n, exact); return (Spec.Segment(dim, c - f, c + f), c, n); }
+                    return (r.Chance(0.5) ? Spec.Segment(dim, c, c + Inward()) : Spec.Segment(dim, c + Inward(), c), c, n);
+                case Kind.Line:
+                {
+                    var d = Along();
+                    return (Spec.Line(dim, c - d * r.Int(-3, 3), d * r.Sign()), c, n);
+                }
+                case Kind.Ray:
+                {
+                    var d = r.Chance(0.5) ? Along() : NonZero(r, Inward(), n, dim, exact, g);
+                    return (Spec.Ray(dim, c, d), c, n);
+                }
+                case Kind.Sphere:
+                {
+                    double radius = Radius();
+                    return (Spec.Sphere(dim, c, radius), c + n * radius, n);
+                }
+                case Kind.Capsule:
+                {
+                    double radius = Radius();
+                    var w = r.Chance(0.5) ? Flat(W(), n, exact) : Inward();
+                    return (r.Chance(0.5) ? Spec.Capsule(dim, c, c + w, radius) : Spec.Capsule(dim, c + w, c, radius), c + n * radius, n);
+                }
+                case Kind.Triangle:
+                {
+                    if (dim == 3 && r.Chance(0.4))
+                    {
+                        // Lying in the plane through c: c is its centroid.
+                        Vector3D f1 = Flat(W(), n, exact), f2 = Flat(W(), n, exact);
+                        return (Spec.Triangle(dim, c + f1, c + f2, c - f1 - f2), c, n);
+                    }
+                    return (Spec.Triangle(dim, c, c + Inward(), c + Inward()), c, n);
+                }
+                case Kind.HalfSpace:
+                {
+                    var normal = n * (exact ? Math.Pow(2, r.Int(-4, 4)) : r.Pow2(-4, 4));
+                    return (Spec.HalfSpace(dim, c + Flat(W(), n, exact), normal), c, n);
+                }
+                default:
+                {
+                    // A box at center c: per axis the contact coordinate is at +h, −h or inside; n combines the outward
+                    // normals of the faces it is on (exact: one face).
+                    var h = exact ? GridNonNeg(r, 6, g, dim) + new Vector3D(g, g, dim == 3 ? g : 0) : new Vector3D(r.Range(0.1, 1), r.Range(0.1, 1), dim == 3 ? r.Range(0.1, 1) : 0) * s;
+                    var box = kind == Kind.Aabb ? Spec.Aabb(dim, c - h, c + h)
+                        : exact ? ExactObb(r, dim, c, h) : Obb(r, dim, c, h, RandomQuaternion(r), r.Range(0, 2 * Math.PI));
+                    var core = Core.Of(box.Build());
+                    var axes = kind == Kind.Aabb ? new[] { Vector3D.UnitX, Vector3D.UnitY, Vector3D.UnitZ } : core.Axes;
+                    var hh = kind == Kind.Aabb ? new[] { h.X, h.Y, h.Z } : new[] { core.H.X, core.H.Y, core.H.Z };
+                    var center = kind == Kind.Aabb ? (core.P + core.Q) * 0.5 : core.P;
+                    int k = r.Int(dim);
+                    var contact = center;
+                    var normal = default(Vector3D);
+                    for (int i = 0; i < dim; i++)
+                    {
+                        int role = i == k ? 1 + r.Int(2) : r.Int(3); // 0 inside, 1 at +h, 2 at −h
+                        double sign = role == 2 ? -1 : 1;
+                        double coord = role == 0 ? (exact ? r.Int(-1, 1) * 0.5 * hh[i] : r.Range(-1, 1) * hh[i]) : sign * hh[i];
+                        contact += axes[i] * coord;
+                        if (role != 0 && (i == k || !exact)) normal += axes[i] * (sign * (i == k ? 1 : r.Unit()));
+                    }
+                    return (box, contact, normal / normal.Length);
+                }
+            }
+        }
+
+        /// <summary>w turned onto the side w·n ≥ 0 (exact: the axis component made non-negative; else reflected).</summary>
+        private static Vector3D Side(Vector3D w, Vector3D n, bool exact)
+        {
+            if (exact) { int k = AxisOf(n); return Set(w, k, Math.Abs(Get(w, k)) * Sign(n)); }
+            double dot = Vector3D.Dot(w, n);
+            return dot >= 0 ? w : w - n * (2 * dot);
+        }
+
+        /// <summary>w made perpendicular to n (exact: the axis component zeroed).</summary>
+        private static Vector3D Flat(Vector3D w, Vector3D n, bool exact) =>
+            exact ? Set(w, AxisOf(n), 0) : w - n * Vector3D.Dot(w, n);
+
+        /// <summary>w, or a tangent of n of the grid's size when w is zero (a direction must not be).</summary>
+        private static Vector3D NonZero(Rng r, Vector3D w, Vector3D n, int dim, bool exact, double g)
+        {
+            if (w.LengthSquared > 0) return w;
+            if (exact) { int k = (AxisOf(n) + 1 + r.Int(dim - 1)) % dim; return Set(default, k, g * r.Sign()); }
+            return Perp(r, n, dim) * g;
+        }
+
+        /// <summary>
+        /// A guest of the kind in (x − at)·n ≥ 0 touching at (n unit; exact when at is on the grid and n an axis). With
+        /// <paramref name="parallel"/> lines, rays, segments, capsule axes and triangles run parallel to the plane.
+        /// </summary>
+        private static Spec GuestAt(Rng r, Kind kind, int dim, Vector3D at, Vector3D n, double s, double g, bool exact, bool parallel)
+        {
+            Vector3D W() => exact ? Grid(r, 6, g, dim) : U3(r, 1.5, dim) * s;
+            Vector3D Out() => parallel ? Flat(W(), n, exact) : Side(W(), n, exact);
+            Vector3D Along() => NonZero(r, Flat(W(), n, exact), n, dim, exact, g);
+            double Radius() => exact ? r.Int(0, 6) * g : s * r.Range(0.05, 1);
+            switch (kind)
+            {
+                case Kind.Point: return Spec.Point(dim, at);
+                case Kind.Segment:
+                {
+                    var w = Out();
+                    return r.Int(3) switch { 0 => Spec.Segment(dim, at, at + w), 1 => Spec.Segment(dim, at + w, at), _ => Spec.Segment(dim, at - Flat(w, n, exact), at + w) };
+                }
+                case Kind.Line:
+                {
+                    var d = Along();
+                    return Spec.Line(dim, at + d * r.Int(-3, 3), d * r.Sign());
+                }
+                case Kind.Ray:
+                {
+                    if (parallel || r.Chance(0.3)) { var d = Along(); return Spec.Ray(dim, at - d * r.Int(0, 3), d); }
+                    return Spec.Ray(dim, at, NonZero(r, Side(W(), n, exact), n, dim, exact, g));
+                }
+                case Kind.Sphere: { double radius = Radius(); return Spec.Sphere(dim, at + n * radius, radius); }
+                case Kind.Capsule:
+                {
+                    double radius = Radius();
+                    var start = at + n * radius;
+                    return r.Chance(0.5) ? Spec.Capsule(dim, start, start + Out(), radius) : Spec.Capsule(dim, start - Flat(W(), n, exact), start + Out(), radius);
+                }
+                case Kind.Triangle:
+                {
+                    if (dim == 3 && (parallel || r.Chance(0.3)))
+                    {
+                        Vector3D f1 = Flat(W(), n, exact), f2 = Flat(W(), n, exact);
+                        return r.Chance(0.5) ? Spec.Triangle(dim, at + f1, at + f2, at - f1 - f2) : Spec.Triangle(dim, at, at + f1, at + f2);
+                    }
+                    return Spec.Triangle(dim, at, at + Out(), at + Out());
+                }
+                case Kind.HalfSpace:
+                    return Spec.HalfSpace(dim, at + Flat(W(), n, exact), -n * (exact ? Math.Pow(2, r.Int(-4, 4)) : r.Pow2(-4, 4)));
+                case Kind.Aabb:
+                {
+                    var lo = new double[3];
+                    var hi = new double[3];
+                    for (int j = 0; j < dim; j++)
+                    {
+                        double pj = Get(at, j), nj = Get(n, j), e = exact ? r.Int(0, 6) * g : r.Range(0, 1.5) * s;
+                        if (nj > 0) { lo[j] = pj; hi[j] = pj + e; }
+                        else if (nj < 0) { lo[j] = pj - e; hi[j] = pj; }
+                        else { lo[j] = pj - (exact ? r.Int(0, 6) * g : e); hi[j] = pj + (exact ? r.Int(0, 6) * g : e); }
+                    }
+                    return Spec.Aabb(dim, new Vector3D(lo[0], lo[1], lo[2]), new Vector3D(hi[0], hi[1], hi[2]));
+                }
+                default:
+                {
+                    var ext = exact ? GridNonNeg(r, 6, g, dim) : new Vector3D(r.Range(0, 1), r.Range(0, 1), dim == 3 ? r.Range(0, 1) : 0) * s;
+                    if (exact)
+                    {
+                        var world = ext * 0.5;
+                        int k = AxisOf(n);
+                        var center = at + n * Get(world, k);
+                        for (int j = 0; j < dim; j++)
+                            if (j != k) center = Set(center, j, Get(center, j) + r.Int(-1, 1) * Get(world, j));
+                        return ExactObbWithWorldHalf(r, dim, center, world);
+                    }
+                    var q = RandomQuaternion(r);
+                    double angle = r.Range(0, 2 * Math.PI);
+                    var h = ext * 0.5;
+                    var probe = Core.Of(Obb(r, dim, default, h, q, angle).Build());
+                    var c = at;
+                    var hh = new[] { h.X, h.Y, h.Z };
+                    for (int i = 0; i < dim; i++) c += probe.Axes[i] * (hh[i] * (Vector3D.Dot(probe.Axes[i], n) >= 0 ? 1 : -1));
+                    return dim == 3 ? Obb(r, 3, c, h, q, angle) : Spec.Obb2Axis(c, probe.Axes[0].X, probe.Axes[0].Y, h);
+                }
+            }
+        }
+
+        /// <summary>
+        /// Two shapes in contact (host and guest, either one first), exact or general, optionally moved apart or into
+        /// each other along the normal by 10^0…10^−16 of the size (or 0).
+        /// </summary>
+        private static (Spec, Spec) Contact(Rng r, Kind ka, Kind kb, int dim, Precision p, bool exact, bool offset, bool parallel)
+        {
+            double s = exact ? Math.Pow(2, p.Float ? r.Int(-10, 10) : r.Int(-30, 30)) : r.Pow2(-10, 10), g = s / 4;
+            bool hostIsA = r.Chance(0.5);
+            var (host, contact, n) = HostContact(r, hostIsA ? ka : kb, dim, s, g, exact);
+            if (offset && !r.Chance(0.25)) contact += n * (s * r.Pow10Neg(0, 16) * r.Sign());
+            var guest = GuestAt(r, hostIsA ? kb : ka, dim, contact, n, s, g, exact, parallel);
+            return Finish(hostIsA ? host : guest, hostIsA ? guest : host, p);
+        }
+
+        /// <summary>
+        /// Grazing contacts with a general rotation: lines and rays tangent to spheres and capsules (sides and caps),
+        /// through box edges and vertices, planes through box edges and vertices, shapes at triangle vertices and on
+        /// triangle planes — apart or overlapping by 10^0…10^−16 of the size, or touching to rounding.
+        /// </summary>
+        private static (Spec, Spec) Grazing(Rng r, Kind ka, Kind kb, int dim, Precision p) =>
+            Contact(r, ka, kb, dim, p, exact: false, offset: true, parallel: r.Chance(0.3));
+
+        /// <summary>
+        /// Exactly parallel contacts: lines, rays, segments, capsules and triangles parallel to box faces, half-space
+        /// boundaries and triangle planes (exact axes), at exact offsets of 0 or ±2^−k of the size, or 10^−k ones.
+        /// </summary>
+        private static (Spec, Spec) Parallel(Rng r, Kind ka, Kind kb, int dim, Precision p)
+        {
+            if (r.Chance(0.5)) return Contact(r, ka, kb, dim, p, exact: true, offset: true, parallel: true);
+            // Exact offsets: a power of two below the grid, kept exact by the float and double grids.
+            double s = Math.Pow(2, p.Float ? r.Int(-10, 10) : r.Int(-30, 30)), g = s / 4;
+            bool hostIsA = r.Chance(0.5);
+            var (host, contact, n) = HostContact(r, hostIsA ? ka : kb, dim, s, g, exact: true);
+            contact += n * (r.Chance(0.2) ? 0 : r.Sign() * Math.ScaleB(g, -r.Int(0, p.Float ? 12 : 40)));
+            var guest = GuestAt(r, hostIsA ? kb : ka, dim, contact, n, s, g, exact: true, parallel: r.Chance(0.7));
+            return Finish(hostIsA ? host : guest, hostIsA ? guest : host, p);
+        }
+
+        /// <summary>
+        /// Needle triangles (two vertices 10^−3…10^−15 of the size apart) and sliver triangles (a vertex that close to
+        /// the opposite edge's line), against a shape near their boundary, and against each other.
+        /// </summary>
+        private static (Spec, Spec) Slivers(Rng r, Kind ka, Kind kb, int dim, Precision p)
+        {
+            double s = r.Pow2(-10, 10);
+            Spec Sliver()
+            {
+                var a = U3(r, 1, dim) * s;
+                var b = a + Dir(r, dim) * (s * r.Range(0.5, 2));
+                double tiny = s * r.Pow10Neg(3, 15);
+                var c = r.Chance(0.5) ? a + Dir(r, dim) * tiny
+                    : a + (b - a) * r.Range(-0.5, 1.5) + Perp(r, (b - a) / (b - a).Length, dim) * tiny;
+                return r.Int(3) switch { 0 => Spec.Triangle(dim, a, b, c), 1 => Spec.Triangle(dim, c, a, b), _ => Spec.Triangle(dim, b, c, a) };
+            }
+            bool triA = ka == Kind.Triangle && (kb != Kind.Triangle || r.Chance(0.5));
+            var tri = Sliver();
+            Kind other = triA ? kb : ka;
+            Spec guest;
+            if (other == Kind.Triangle && r.Chance(0.5)) guest = Sliver();
+            else
+            {
+                double small = s * r.Pow2(-20, 0);
+                guest = RandomShape(r, other, dim, SurfacePoint(r, tri) + Dir(r, dim) * (small * r.Range(-1, 1)), small);
+            }
+            return Finish(triA ? tri : guest, triA ? guest : tri, p);
+        }
+
+        /// <summary>
+        /// A line's or ray's origin moved far along it (2^10…2^60 of the size; 2^30 in float), the rest as "random":
+        /// parameters and witnesses far from the origin, where cancellation in Origin + t·Direction shows.
+        /// </summary>
+        private static (Spec, Spec) FarAlong(Rng r, Kind ka, Kind kb, int dim, Precision p)
+        {
+            double s = r.Pow2(-10, 10);
+            Spec Move(Spec x)
+            {
+                if (!Kinds.IsLinear(x.Kind)) return x;
+                var d = x.Q / x.Q.Length;
+                double far = s * r.Pow2(10, p.Float ? 30 : 60);
+                // A ray moves backwards (it still reaches the configuration); a line either way.
+                var o = x.P - d * (far * (x.Kind == Kind.Ray ? 1 : r.Sign()));
+                return x.Kind == Kind.Line ? Spec.Line(dim, o, x.Q) : Spec.Ray(dim, o, x.Q);
+            }
+            var a = RandomShape(r, ka, dim, U3(r, 1.5, dim) * s, s);
+            var b = RandomShape(r, kb, dim, U3(r, 1.5, dim) * s, s);
+            return Finish(Move(a), Move(b), p);
         }
     }
 }

@@ -13,7 +13,9 @@ namespace ProximityReference.Fuzz
     /// edge pair (for polytopes, vertex–box projections and edge–edge pairs include the closest pair);</item>
     /// <item>separating directions (dual): for any direction n, min over B of x·n − max over A of x·n (per |n|) is a lower
     /// bound on the signed distance, apart or overlapping; candidates are the face normals, edge × edge directions, the
-    /// in-plane normals of 2D edges and the directions of the best candidate pairs.</item>
+    /// in-plane normals of 2D edges and the directions of the best candidate pairs. Against a line, ray or half-space
+    /// (support +∞ in most directions) each candidate is first fitted exactly (<see cref="Core.Fit"/>) so that both
+    /// supports can be finite, and the exact fitted direction is what the caller evaluates.</item>
     /// </list>
     /// Only the ranking happens in doubles: the caller re-evaluates the best candidates exactly.
     /// </summary>
@@ -112,46 +114,91 @@ namespace ProximityReference.Fuzz
             return (bestS, bestT);
         }
 
+        /// <summary>A candidate direction: rounded to doubles (about unit length; for ranking and messages) and exact (for the bound).</summary>
+        public readonly struct Direction
+        {
+            public readonly Vector3D N;
+            public readonly DyVec Exact;
+            public Direction(Vector3D n, DyVec exact) { N = n; Exact = exact; }
+        }
+
         /// <summary>
         /// Candidate directions n (from A toward B) for the lower bound (min_B x·n − max_A x·n − shift·n)/|n| − rA − rB,
         /// ranked in the local copy: every one within <see cref="Tie"/> of the best (local rounding cannot rank those),
         /// at most <paramref name="keep"/>. Cross products of edge directions are formed exactly and only then rounded,
         /// so the normal of two nearly parallel edges is accurate (in doubles it would be cancellation noise).
-        /// <paramref name="shift"/> moves A (local units).
+        /// <paramref name="shift"/> moves A (local units). With bounded shapes the exact direction is the rounded one;
+        /// with an unbounded one it is the candidate (exact cross products unrounded) fitted to both shapes, and the
+        /// candidates that cannot be fitted (both supports finite) are dropped.
         /// </summary>
-        public static List<Vector3D> BestDirections(Core a, Core b, double ra, double rb, IEnumerable<Vector3D> extra,
+        public static List<Direction> BestDirections(Core a, Core b, double ra, double rb, IEnumerable<Vector3D> extra,
             Vector3D shift, int keep)
         {
+            bool unbounded = a.IsUnbounded || b.IsUnbounded;
             bool planar = a.Planar || b.Planar;
-            var dirs = new List<Vector3D> { Vector3D.UnitX, Vector3D.UnitY };
-            if (!planar) dirs.Add(Vector3D.UnitZ);
             var da = new List<DyVec>(a.Directions());
             var db = new List<DyVec>(b.Directions());
-            foreach (var d in da.Concat(db))
+            var ranked = new List<(Direction N, double G)>();
+            void Rank(Direction n)
             {
-                dirs.Add(Round(d));
-                if (planar) dirs.Add(Round(new DyVec(-d.Y, d.X, Dy.Zero)));
+                double g = -b.LocalSupport(-n.N) - a.LocalSupport(n.N) - Vector3D.Dot(shift, n.N) - ra - rb;
+                if (double.IsFinite(g)) ranked.Add((n, g));
             }
-            if (!planar)
-                foreach (var u in da)
-                    foreach (var v in db)
-                        dirs.Add(Round(new DyVec(u.Y * v.Z - u.Z * v.Y, u.Z * v.X - u.X * v.Z, u.X * v.Y - u.Y * v.X)));
-            dirs.AddRange(extra);
-            var ranked = new List<(Vector3D N, double G)>();
-            foreach (var d0 in dirs)
+            if (!unbounded)
             {
-                var d = planar ? new Vector3D(d0.X, d0.Y, 0) : d0;
-                double len = d.Length;
-                if (!(len > 0) || !double.IsFinite(len)) continue;
-                d = d / len;
-                foreach (var n in new[] { d, -d })
+                var dirs = new List<Vector3D> { Vector3D.UnitX, Vector3D.UnitY };
+                if (!planar) dirs.Add(Vector3D.UnitZ);
+                foreach (var d in da.Concat(db))
                 {
-                    double g = -b.LocalSupport(-n) - a.LocalSupport(n) - Vector3D.Dot(shift, n) - ra - rb;
-                    if (double.IsFinite(g)) ranked.Add((n, g));
+                    dirs.Add(Round(d));
+                    if (planar) dirs.Add(Round(new DyVec(-d.Y, d.X, Dy.Zero)));
+                }
+                if (!planar)
+                    foreach (var u in da)
+                        foreach (var v in db)
+                            dirs.Add(Round(Cross(u, v)));
+                dirs.AddRange(extra);
+                foreach (var d0 in dirs)
+                {
+                    var d = planar ? new Vector3D(d0.X, d0.Y, 0) : d0;
+                    double len = d.Length;
+                    if (!(len > 0) || !double.IsFinite(len)) continue;
+                    d = d / len;
+                    foreach (var n in new[] { d, -d }) Rank(new Direction(n, DyVec.From(n)));
+                }
+            }
+            else
+            {
+                // Exact candidates (cross products unrounded), each fitted to A along +n and to B along −n.
+                var dirs = new List<DyVec> { DyVec.From(Vector3D.UnitX), DyVec.From(Vector3D.UnitY) };
+                if (!planar) dirs.Add(DyVec.From(Vector3D.UnitZ));
+                foreach (var d in da.Concat(db))
+                {
+                    dirs.Add(d);
+                    if (planar) dirs.Add(new DyVec(-d.Y, d.X, Dy.Zero));
+                }
+                if (!planar)
+                    foreach (var u in da)
+                        foreach (var v in db)
+                            dirs.Add(Cross(u, v));
+                dirs.AddRange(extra.Where(e => e.IsFinite).Select(DyVec.From));
+                foreach (var d0 in dirs)
+                {
+                    var e0 = planar ? new DyVec(d0.X, d0.Y, Dy.Zero) : d0;
+                    foreach (var e in new[] { e0, -e0 })
+                    {
+                        // Re-fit to A when fitting to B changed the direction (a ray of A may need it).
+                        var f = a.Fit(b.Fit(a.Fit(e, 1), -1), 1);
+                        if (!a.TrySupport(f, out _) || !b.TrySupport(-f, out _)) continue;
+                        var r = Round(f);
+                        double len = r.Length;
+                        if (!(len > 0) || !double.IsFinite(len)) continue;
+                        Rank(new Direction(r / len, f));
+                    }
                 }
             }
             ranked.Sort((x, y) => y.G.CompareTo(x.G));
-            var best = new List<Vector3D>();
+            var best = new List<Direction>();
             foreach (var (n, g) in ranked)
             {
                 if (best.Count >= keep || (best.Count > 0 && g < ranked[0].G - Tie)) break;
@@ -162,6 +209,8 @@ namespace ProximityReference.Fuzz
 
         /// <summary>Local gaps closer than this to the best (local units, the configuration's size ~1) are ties.</summary>
         public const double Tie = 1e-9;
+
+        private static DyVec Cross(DyVec u, DyVec v) => new DyVec(u.Y * v.Z - u.Z * v.Y, u.Z * v.X - u.X * v.Z, u.X * v.Y - u.Y * v.X);
 
         /// <summary>An exact direction rounded to doubles after scaling it to about unit length (no under- or overflow).</summary>
         private static Vector3D Round(DyVec v)

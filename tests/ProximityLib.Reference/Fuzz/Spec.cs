@@ -1,12 +1,38 @@
 using System;
 using System.Globalization;
+using System.Linq;
 using System.Numerics;
 using ProximityLib.Double;
 using Dbl = ProximityLib.Double;
 
 namespace ProximityReference.Fuzz
 {
-    public enum Kind { Point, Segment, Sphere, Aabb, Obb }
+    /// <summary>
+    /// The shape kinds. The first five keep their original values (a case is drawn from (seed, index) through them, so
+    /// recorded repros keep their meaning); issue 12's kinds are appended. <see cref="Kinds.Rank"/> is the library's pair
+    /// order (point &lt; segment &lt; line &lt; ray &lt; sphere &lt; capsule &lt; triangle &lt; half-space &lt; AABB &lt; OBB).
+    /// </summary>
+    public enum Kind { Point, Segment, Sphere, Aabb, Obb, Line, Ray, Capsule, Triangle, HalfSpace }
+
+    public static class Kinds
+    {
+        /// <summary>The library's pair order (src/ProximityLib/Pairs file names): which kind of a pair comes first.</summary>
+        public static int Rank(Kind k) => k switch
+        {
+            Kind.Point => 0, Kind.Segment => 1, Kind.Line => 2, Kind.Ray => 3, Kind.Sphere => 4, Kind.Capsule => 5,
+            Kind.Triangle => 6, Kind.HalfSpace => 7, Kind.Aabb => 8, _ => 9,
+        };
+
+        /// <summary>Every kind in the library's pair order.</summary>
+        public static readonly Kind[] InOrder =
+            { Kind.Point, Kind.Segment, Kind.Line, Kind.Ray, Kind.Sphere, Kind.Capsule, Kind.Triangle, Kind.HalfSpace, Kind.Aabb, Kind.Obb };
+
+        /// <summary>The kinds before issue 12 (their 30 pairs keep the original case index space).</summary>
+        public static bool IsOriginal(Kind k) => k <= Kind.Obb;
+
+        /// <summary>Lines and rays: unbounded, with a free parameter t (Point = Origin + t·Direction).</summary>
+        public static bool IsLinear(Kind k) => k == Kind.Line || k == Kind.Ray;
+    }
 
     /// <summary>How an OBB is constructed: the constructor the repro must call to rebuild it bit for bit.</summary>
     public enum ObbForm { None, Quaternion, Axes, Angle, Axis }
@@ -21,21 +47,23 @@ namespace ProximityReference.Fuzz
         public Kind Kind { get; }
         public int Dim { get; }
         public bool Float { get; }
-        /// <summary>Point; segment start; sphere/circle/OBB center; AABB min.</summary>
+        /// <summary>Point; segment/capsule start; sphere/circle/OBB center; AABB min; line/ray origin; triangle A; half-space point.</summary>
         public Vector3D P { get; }
-        /// <summary>Segment end; AABB max.</summary>
+        /// <summary>Segment/capsule end; AABB max; line/ray direction; triangle B; half-space normal.</summary>
         public Vector3D Q { get; }
-        /// <summary>Radius.</summary>
+        /// <summary>Radius (sphere, capsule); the half-space offset in the offset form.</summary>
         public double R { get; }
-        /// <summary>OBB half-extents.</summary>
+        /// <summary>OBB half-extents; triangle C.</summary>
         public Vector3D H { get; }
         public ObbForm Form { get; }
+        /// <summary>A half-space built by <c>new HalfSpace(normal, offset)</c> (else <c>HalfSpace.FromPointNormal(point, normal)</c>).</summary>
+        public bool ByOffset { get; }
         /// <summary>Quaternion (x, y, z, w); three axes (9 values); an angle; a 2D axis (2 values).</summary>
         public double[] Rot { get; }
 
-        private Spec(Kind kind, int dim, bool isFloat, Vector3D p, Vector3D q, double r, Vector3D h, ObbForm form, double[] rot)
+        private Spec(Kind kind, int dim, bool isFloat, Vector3D p, Vector3D q, double r, Vector3D h, ObbForm form, double[] rot, bool byOffset = false)
         {
-            Kind = kind; Dim = dim; Float = isFloat; P = p; Q = q; R = r; H = h; Form = form; Rot = rot;
+            Kind = kind; Dim = dim; Float = isFloat; P = p; Q = q; R = r; H = h; Form = form; Rot = rot; ByOffset = byOffset;
         }
 
         private static Vector3D Flat(Vector3D v, int dim) => dim == 2 ? new Vector3D(v.X, v.Y, 0) : v;
@@ -64,13 +92,44 @@ namespace ProximityReference.Fuzz
         public static Spec Obb2Axis(Vector3D c, double ax, double ay, Vector3D h) =>
             new Spec(Kind.Obb, 2, false, Flat(c, 2), default, 0, Flat(Abs(h), 2), ObbForm.Axis, new[] { ax, ay });
 
+        /// <summary>A line through origin along direction (normalised by the constructor; any non-zero vector).</summary>
+        public static Spec Line(int dim, Vector3D origin, Vector3D direction) =>
+            new Spec(Kind.Line, dim, false, Flat(origin, dim), Flat(direction, dim), 0, default, ObbForm.None, Array.Empty<double>());
+
+        public static Spec Ray(int dim, Vector3D origin, Vector3D direction) =>
+            new Spec(Kind.Ray, dim, false, Flat(origin, dim), Flat(direction, dim), 0, default, ObbForm.None, Array.Empty<double>());
+
+        public static Spec Capsule(int dim, Vector3D start, Vector3D end, double radius) =>
+            new Spec(Kind.Capsule, dim, false, Flat(start, dim), Flat(end, dim), Math.Abs(radius), default, ObbForm.None, Array.Empty<double>());
+
+        public static Spec Triangle(int dim, Vector3D a, Vector3D b, Vector3D c) =>
+            new Spec(Kind.Triangle, dim, false, Flat(a, dim), Flat(b, dim), 0, Flat(c, dim), ObbForm.None, Array.Empty<double>());
+
+        /// <summary>A half-space (half-plane in 2D) {x : normal·(x − point) ≤ 0} through <c>FromPointNormal</c>.</summary>
+        public static Spec HalfSpace(int dim, Vector3D point, Vector3D normal) =>
+            new Spec(Kind.HalfSpace, dim, false, Flat(point, dim), Flat(normal, dim), 0, default, ObbForm.None, Array.Empty<double>());
+
+        /// <summary>A half-space {x : normal·x ≤ offset} (the normal as given) through the constructor <c>new HalfSpace(normal, offset)</c>.</summary>
+        public static Spec HalfSpaceOffset(int dim, Vector3D normal, double offset) =>
+            new Spec(Kind.HalfSpace, dim, false, default, Flat(normal, dim), offset, default, ObbForm.None, Array.Empty<double>(), true);
+
         private static Vector3D Abs(Vector3D v) => new Vector3D(Math.Abs(v.X), Math.Abs(v.Y), Math.Abs(v.Z));
 
         private Spec With(Vector3D p, Vector3D q, double r, Vector3D h, bool isFloat, double[] rot) =>
-            new Spec(Kind, Dim, isFloat, p, q, r, h, Form, rot);
+            new Spec(Kind, Dim, isFloat, p, q, r, h, Form, rot, ByOffset);
 
         /// <summary>True when the point fields are positions (translated with the shape), Q included.</summary>
-        private bool QIsPosition => Kind == Kind.Segment || Kind == Kind.Aabb;
+        private bool QIsPosition => Kind == Kind.Segment || Kind == Kind.Aabb || Kind == Kind.Capsule || Kind == Kind.Triangle;
+
+        /// <summary>True when H is a position (a triangle's third vertex).</summary>
+        private bool HIsPosition => Kind == Kind.Triangle;
+
+        /// <summary>The boundary point an offset-form half-space stores (what its translation moves).</summary>
+        private Vector3D StoredPoint()
+        {
+            var built = Core.DoubleForm(Build());
+            return built is Dbl.HalfSpace h ? h.Point : built is Dbl.HalfPlane g ? new Vector3D(g.Point.X, g.Point.Y, 0) : P;
+        }
 
         /// <summary>The same spec with every value rounded to float (the float API's inputs).</summary>
         public Spec ToFloat()
@@ -84,27 +143,44 @@ namespace ProximityReference.Fuzz
         public Spec Translated(Vector3D t)
         {
             t = Flat(t, Dim);
-            return With(P + t, QIsPosition ? Q + t : Q, R, H, Float, Rot);
+            // An offset-form half-space moves its stored boundary point: the point form with the same normal (normalised
+            // the same way) rebuilds the translated shape exactly; its offset would round.
+            if (Kind == Kind.HalfSpace && ByOffset)
+                return new Spec(Kind, Dim, Float, StoredPoint() + t, Q, 0, default, ObbForm.None, Rot);
+            return With(P + t, QIsPosition ? Q + t : Q, R, HIsPosition ? H + t : H, Float, Rot);
         }
 
-        /// <summary>Every length multiplied by 2^k (exact unless it leaves the range); rotations unchanged.</summary>
+        /// <summary>Every length multiplied by 2^k (exact unless it leaves the range); rotations, directions and normals unchanged.</summary>
         public Spec ScaledBy2(int k)
         {
             static Vector3D S(Vector3D v, int k) => new Vector3D(Math.ScaleB(v.X, k), Math.ScaleB(v.Y, k), Math.ScaleB(v.Z, k));
-            return With(S(P, k), S(Q, k), Math.ScaleB(R, k), S(H, k), Float, Rot);
+            bool qIsLength = !(Kinds.IsLinear(Kind) || Kind == Kind.HalfSpace);
+            return With(S(P, k), qIsLength ? S(Q, k) : Q, Math.ScaleB(R, k), S(H, k), Float, Rot);
         }
 
         /// <summary>Each input value that is a length or a position (what 2^k scaling multiplies).</summary>
         public double[] Lengths() => Kind switch
         {
-            Kind.Point => new[] { P.X, P.Y, P.Z },
+            Kind.Point or Kind.Line or Kind.Ray => new[] { P.X, P.Y, P.Z },
             Kind.Segment or Kind.Aabb => new[] { P.X, P.Y, P.Z, Q.X, Q.Y, Q.Z },
             Kind.Sphere => new[] { P.X, P.Y, P.Z, R },
+            Kind.Capsule => new[] { P.X, P.Y, P.Z, Q.X, Q.Y, Q.Z, R },
+            Kind.Triangle => new[] { P.X, P.Y, P.Z, Q.X, Q.Y, Q.Z, H.X, H.Y, H.Z },
+            // The offset form's stored point (normal·offset, rounded) must stay normal too for its scaling to be exact.
+            Kind.HalfSpace when ByOffset => new[] { R }.Concat(Coordinates(StoredPoint())).ToArray(),
+            Kind.HalfSpace => new[] { P.X, P.Y, P.Z },
             _ => new[] { P.X, P.Y, P.Z, H.X, H.Y, H.Z },
         };
 
+        private static double[] Coordinates(Vector3D v) => new[] { v.X, v.Y, v.Z };
+
         /// <summary>Position coordinates per axis (what a translation adds to).</summary>
-        public Vector3D[] Positions() => QIsPosition ? new[] { P, Q } : new[] { P };
+        public Vector3D[] Positions() => Kind switch
+        {
+            Kind.Triangle => new[] { P, Q, H },
+            Kind.HalfSpace when ByOffset => new[] { StoredPoint() },
+            _ => QIsPosition ? new[] { P, Q } : new[] { P },
+        };
 
         /// <summary>Builds the library's shape (double or float API) through the constructor the repro prints.</summary>
         public object Build()
@@ -124,6 +200,16 @@ namespace ProximityReference.Fuzz
                     (Kind.Sphere, _) => new Dbl.Circle(p2, R),
                     (Kind.Aabb, 3) => new Dbl.Aabb3(P, Q),
                     (Kind.Aabb, _) => new Dbl.Aabb2(p2, q2),
+                    (Kind.Line, 3) => new Dbl.Line3(P, Q),
+                    (Kind.Line, _) => new Dbl.Line2(p2, q2),
+                    (Kind.Ray, 3) => new Dbl.Ray3(P, Q),
+                    (Kind.Ray, _) => new Dbl.Ray2(p2, q2),
+                    (Kind.Capsule, 3) => new Dbl.Capsule3(P, Q, R),
+                    (Kind.Capsule, _) => new Dbl.Capsule2(p2, q2, R),
+                    (Kind.Triangle, 3) => new Dbl.Triangle3(P, Q, H),
+                    (Kind.Triangle, _) => new Dbl.Triangle2(p2, q2, h2),
+                    (Kind.HalfSpace, 3) => ByOffset ? new Dbl.HalfSpace(Q, R) : Dbl.HalfSpace.FromPointNormal(P, Q),
+                    (Kind.HalfSpace, _) => ByOffset ? new Dbl.HalfPlane(q2, R) : Dbl.HalfPlane.FromPointNormal(p2, q2),
                     _ => Form switch
                     {
                         ObbForm.Quaternion => Dbl.Obb3.FromQuaternion(P, Rot[0], Rot[1], Rot[2], Rot[3], H),
@@ -150,6 +236,16 @@ namespace ProximityReference.Fuzz
                 (Kind.Sphere, _) => new ProximityLib.Circle(fp2, (float)R),
                 (Kind.Aabb, 3) => new ProximityLib.Aabb3(fp, fq),
                 (Kind.Aabb, _) => new ProximityLib.Aabb2(fp2, fq2),
+                (Kind.Line, 3) => new ProximityLib.Line3(fp, fq),
+                (Kind.Line, _) => new ProximityLib.Line2(fp2, fq2),
+                (Kind.Ray, 3) => new ProximityLib.Ray3(fp, fq),
+                (Kind.Ray, _) => new ProximityLib.Ray2(fp2, fq2),
+                (Kind.Capsule, 3) => new ProximityLib.Capsule3(fp, fq, (float)R),
+                (Kind.Capsule, _) => new ProximityLib.Capsule2(fp2, fq2, (float)R),
+                (Kind.Triangle, 3) => new ProximityLib.Triangle3(fp, fq, fh),
+                (Kind.Triangle, _) => new ProximityLib.Triangle2(fp2, fq2, fh2),
+                (Kind.HalfSpace, 3) => ByOffset ? new ProximityLib.HalfSpace(fq, (float)R) : ProximityLib.HalfSpace.FromPointNormal(fp, fq),
+                (Kind.HalfSpace, _) => ByOffset ? new ProximityLib.HalfPlane(fq2, (float)R) : ProximityLib.HalfPlane.FromPointNormal(fp2, fq2),
                 _ => Form switch
                 {
                     ObbForm.Quaternion => new ProximityLib.Obb3(fp, new Quaternion((float)Rot[0], (float)Rot[1], (float)Rot[2], (float)Rot[3]), fh),
@@ -193,6 +289,12 @@ namespace ProximityReference.Fuzz
                 Kind.Segment => $"new Segment{d}({Vec(P)}, {Vec(Q)})",
                 Kind.Sphere => $"new {(Dim == 3 ? "Sphere" : "Circle")}({Vec(P)}, {L(R)})",
                 Kind.Aabb => $"new Aabb{d}({Vec(P)}, {Vec(Q)})",
+                Kind.Line => $"new Line{d}({Vec(P)}, {Vec(Q)})",
+                Kind.Ray => $"new Ray{d}({Vec(P)}, {Vec(Q)})",
+                Kind.Capsule => $"new Capsule{d}({Vec(P)}, {Vec(Q)}, {L(R)})",
+                Kind.Triangle => $"new Triangle{d}({Vec(P)}, {Vec(Q)}, {Vec(H)})",
+                Kind.HalfSpace when ByOffset => $"new {(Dim == 3 ? "HalfSpace" : "HalfPlane")}({Vec(Q)}, {L(R)})",
+                Kind.HalfSpace => $"{(Dim == 3 ? "HalfSpace" : "HalfPlane")}.FromPointNormal({Vec(P)}, {Vec(Q)})",
                 _ => Form switch
                 {
                     ObbForm.Quaternion when Float => $"new Obb3({Vec(P)}, new Quaternion({L(Rot[0])}, {L(Rot[1])}, {L(Rot[2])}, {L(Rot[3])}), {Vec(H)})",
@@ -215,6 +317,11 @@ namespace ProximityReference.Fuzz
             Kind.Segment => "segment",
             Kind.Sphere => Dim == 3 ? "sphere" : "circle",
             Kind.Aabb => "AABB",
+            Kind.Line => "line",
+            Kind.Ray => "ray",
+            Kind.Capsule => "capsule",
+            Kind.Triangle => "triangle",
+            Kind.HalfSpace => Dim == 3 ? "half-space" : "half-plane",
             _ => "OBB",
         };
 
