@@ -56,5 +56,36 @@ namespace ProximityTests.Fuzz
             var failures = Checker.Run(FuzzCase.Create(seed, index), exact: true);
             Assert.That(failures, Is.Empty, Engine.Replay(seed, index));
         }
+
+        /// <summary>
+        /// Cases the new-pair fuzz found (seed 5, 64,000 cases), each a defect fixed with it: half-space pairs with nearly
+        /// parallel normals whose common point missed both boundaries (the 2×2 system's determinant cancelled; float up to
+        /// 137 units off) and a −0 distance in one argument order; linear–capsule and point-like–linear pairs whose axes
+        /// meet at rounding level, pushed along a residual that was noise (along the line itself: the push-out did not
+        /// clear); a capsule whose axis touches a box pushed along a face normal that led the axis back in; a meeting-axes
+        /// normal from a cross product that overflowed or underflowed (2^k scaling: NaN witnesses at 2^-402); triangle
+        /// crossings rounded at their world position (translation by 5e19 turned a 3e-8 gap into 0).
+        /// </summary>
+        [TestCase(5, 1000000006117, TestName = "HalfSpaces nearly opposite, both outside")]
+        [TestCase(5, 1000000010997, TestName = "HalfSpaces nearly opposite, float")]
+        [TestCase(5, 1000000014157, TestName = "HalfPlanes nearly opposite")]
+        [TestCase(5, 1000000007557, TestName = "HalfSpaces touching, signed zero")]
+        [TestCase(5, 1000000004333, TestName = "Line through a capsule's axis end")]
+        [TestCase(5, 1000000009700, TestName = "Ray through a capsule's axis, float")]
+        [TestCase(5, 1000000037813, TestName = "Line through a stadium's axis end")]
+        [TestCase(5, 1000000041340, TestName = "Ray through a stadium's axis end")]
+        [TestCase(5, 1000000036031, TestName = "Capsule axis end on a point AABB")]
+        [TestCase(5, 1000000026432, TestName = "Capsule axis end on a point OBB")]
+        [TestCase(5, 1000000041419, TestName = "Ray through a circle's centre")]
+        [TestCase(5, 1000000046652, TestName = "Line through a sphere's centre")]
+        [TestCase(5, 1000000024828, TestName = "Capsules sharing an axis end, scaled 2^326")]
+        [TestCase(5, 1000000012007, TestName = "Segment meeting a capsule's axis end, scaled 2^-402")]
+        [TestCase(5, 1000000033153, TestName = "Nearly parallel triangles translated by 5e19")]
+        [TestCase(5, 1000000033300, TestName = "Ray far along to a capsule, scaled 2^793")]
+        public void CasesTheNewPairFuzzFoundKeepEveryInvariant(long seed, long index)
+        {
+            var failures = Checker.Run(FuzzCase.Create(seed, index), exact: true);
+            Assert.That(failures, Is.Empty, Engine.Replay(seed, index));
+        }
     }
 }

@@ -31,9 +31,9 @@ namespace ProximityLib.Double
                 inRange &= g == 0 || Range.In(g);
                 return new DistanceResult3(Math.Sqrt(g), g, o + u * t, box.Origin + box.ToWorldOffset(c + Clamp(e, -h, h)), t, 0);
             }
-            double depth = Math.Max(0, LineBoxPenetration(m, d, h, box.Planar, ray, out var push));
+            double depth = Math.Max(0, LineBoxPenetration(m, d, h, box.Planar, ray, out var dir));
             // The line moved by the push just touches the box: its closest pair there, the line's point moved back.
-            LineBoxNearest(m + push, d, h, ray, out t, out e);
+            LineBoxNearest(m + dir * depth, d, h, ray, out t, out e);
             var onLine = o + u * t;
             return new DistanceResult3(-depth, 0, onLine, depth > 0 ? box.Origin + box.ToWorldOffset(c + Clamp(e, -h, h)) : onLine, t, 0);
         }
@@ -61,37 +61,37 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
-        /// The least push (box-local) that clears the line m + t·d (relative to the box centre) from the box of
+        /// The least push (box-local; its length, and its unit direction in <paramref name="dir"/>) that clears the line m + t·d (relative to the box centre) from the box of
         /// half-extents h. A line can only be cleared sideways: over the directions d × box axis (planar: the in-plane
         /// one), on which the whole line projects to one value; they include every box normal perpendicular to the line.
         /// A ray can also be pushed back past a face it leaves through: along a box normal n with n·d ≥ 0, by the
         /// distance from its origin to that face.
         /// </summary>
-        private static double LineBoxPenetration(Vector3D m, Vector3D d, Vector3D h, bool planar, bool ray, out Vector3D push)
+        private static double LineBoxPenetration(Vector3D m, Vector3D d, Vector3D h, bool planar, bool ray, out Vector3D dir)
         {
             double best = double.PositiveInfinity;
-            push = default;
+            dir = default;
             if (ray)
             {
-                TryRayFace(m.X, d.X, h.X, Vector3D.UnitX, ref best, ref push);
-                TryRayFace(m.Y, d.Y, h.Y, Vector3D.UnitY, ref best, ref push);
-                if (!planar) TryRayFace(m.Z, d.Z, h.Z, Vector3D.UnitZ, ref best, ref push);
+                TryRayFace(m.X, d.X, h.X, Vector3D.UnitX, ref best, ref dir);
+                TryRayFace(m.Y, d.Y, h.Y, Vector3D.UnitY, ref best, ref dir);
+                if (!planar) TryRayFace(m.Z, d.Z, h.Z, Vector3D.UnitZ, ref best, ref dir);
             }
-            TryCrossAxis(new Vector3D(d.Y, -d.X, 0), m.X * d.Y - m.Y * d.X, h.X * Math.Abs(d.Y) + h.Y * Math.Abs(d.X), ref best, ref push);
+            TryCrossAxis(new Vector3D(d.Y, -d.X, 0), m.X * d.Y - m.Y * d.X, h.X * Math.Abs(d.Y) + h.Y * Math.Abs(d.X), ref best, ref dir);
             if (!planar)
             {
-                TryCrossAxis(new Vector3D(0, d.Z, -d.Y), m.Y * d.Z - m.Z * d.Y, h.Y * Math.Abs(d.Z) + h.Z * Math.Abs(d.Y), ref best, ref push);
-                TryCrossAxis(new Vector3D(-d.Z, 0, d.X), m.Z * d.X - m.X * d.Z, h.X * Math.Abs(d.Z) + h.Z * Math.Abs(d.X), ref best, ref push);
+                TryCrossAxis(new Vector3D(0, d.Z, -d.Y), m.Y * d.Z - m.Z * d.Y, h.Y * Math.Abs(d.Z) + h.Z * Math.Abs(d.Y), ref best, ref dir);
+                TryCrossAxis(new Vector3D(-d.Z, 0, d.X), m.Z * d.X - m.X * d.Z, h.X * Math.Abs(d.Z) + h.Z * Math.Abs(d.X), ref best, ref dir);
             }
             return best;
         }
 
         /// <summary>A box normal n along which the ray covers [m, ∞) (d &gt; 0), (−∞, m] (d &lt; 0) or {m} (d = 0); the box [−h, h].</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void TryRayFace(double m, double d, double h, Vector3D n, ref double best, ref Vector3D push)
+        private static void TryRayFace(double m, double d, double h, Vector3D n, ref double best, ref Vector3D dir)
         {
-            if (d >= 0 && h - m < best) { best = h - m; push = n * best; }
-            if (d <= 0 && m + h < best) { best = m + h; push = -n * best; }
+            if (d >= 0 && h - m < best) { best = h - m; dir = n; }
+            if (d <= 0 && m + h < best) { best = m + h; dir = -n; }
         }
 
         /// <summary>Whether a line or ray meets a solid box (separating-axis test, no square roots).</summary>
@@ -126,7 +126,7 @@ namespace ProximityLib.Double
         /// A capsule (axis [a, b], radius r) against a solid box: the axis's solid signed distance (as
         /// <see cref="SegmentBox"/>: the same verdict, minimum and push) less r, and the axis's witness moved by r along the
         /// contact direction: toward the box when apart (the box-local gap vector, normalised), against the push when the
-        /// axis meets the box; where the push is zero (the axis touching), against the outward normal of the nearest face.
+        /// axis meets the box, also where the push is zero (the axis touching: the direction of the separating axis).
         /// </summary>
         public static DistanceResult3 CapsuleBox(Vector3D a, Vector3D b, double r, in Box box, out bool inRange)
         {
@@ -152,21 +152,22 @@ namespace ProximityLib.Double
                 }
                 // Apart by the verdict but touching to rounding: the touching branch below.
             }
-            double depth = Math.Max(0, SegmentBoxPenetration(la - c, ld, h, box.Planar, out var push));
-            Vector3D onAxis, onBox, outward;
+            double depth = Math.Max(0, SegmentBoxPenetration(la - c, ld, h, box.Planar, out var dir));
+            // The push direction separates the axis from the box even when the axis only touches it (depth 0): a face
+            // normal there could lead the rest of the axis back into the box.
+            var outward = box.ToWorldOffset(dir);
+            Vector3D onAxis, onBox;
             if (depth > 0)
             {
-                var moved = la + push;
+                var moved = la + dir * depth;
                 SegmentBoxLocal(moved, ld, lo, hi, out t);
                 onAxis = SegmentPoint(a, b, t);
                 onBox = ClampToBox(box, moved + ld * t);
-                outward = box.ToWorldOffset(push) * (1 / push.Length);
             }
             else
             {
                 SegmentBoxLocal(la, ld, lo, hi, out t);
                 onAxis = onBox = SegmentPoint(a, b, t);
-                outward = PointBox(onAxis, box, out _).Normal;
             }
             dist = -depth - r;
             return new DistanceResult3(dist, dist > 0 ? dist * dist : 0, onAxis - outward * r, onBox, t, 0);

@@ -31,8 +31,9 @@ namespace ProximityLib.Double
         /// Point against a line (or a ray when <paramref name="ray"/>) through o with unit direction d: the projection
         /// parameter t = d·(p − o) (clamped at 0 for a ray) and the residual (p − o) − t·d, formed from differences, so a
         /// point far along the line loses only u·|p − o|. The push-out normal is formed only when
-        /// <paramref name="withNormal"/>; for a residual that is rounding against |p − o| its part along d is removed
-        /// first (as <see cref="PointSegment"/> does). <paramref name="inRange"/>: the squared residual lies in the fast
+        /// <paramref name="withNormal"/>; a residual within the rounding of |p − o| counts as zero (the point is on the line,
+        /// the normal <see cref="AnyPerpendicular"/> of d), and a small one has its part along d removed first (as
+        /// <see cref="PointSegment"/> does). <paramref name="inRange"/>: the squared residual lies in the fast
         /// range or the residual is exactly zero.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -47,8 +48,12 @@ namespace ProximityLib.Double
             var n = default(Vector3D);
             if (withNormal)
             {
-                double len = dist;
-                if (t != 0 && r2 < w.LengthSquared * 8.673617379884035e-19) { r -= d * Vector3D.Dot(r, d); len = r.Length; }
+                double len = dist, w2 = w.LengthSquared;
+                // A residual within the rounding of w − d·t (≤ 2^-49·|w|) has no direction of its own (it can lie along
+                // d itself): the point is on the line. A larger one that is still small against |w| loses its part
+                // along d, the rounding of t.
+                if (t != 0 && r2 <= w2 * 3.1554436208840472e-30) len = 0;
+                else if (t != 0 && r2 < w2 * 8.673617379884035e-19) { r -= d * Vector3D.Dot(r, d); len = r.Length; }
                 n = len > 0 ? r * (1 / len) : AnyPerpendicular(d);
             }
             return new PointContact(dist, r2, o + d * t, n, t);
@@ -188,7 +193,8 @@ namespace ProximityLib.Double
         /// <summary>
         /// A linear component a, thickened by ra when it is a capsule's axis, against the capsule (or, for rb = 0 and
         /// !<paramref name="solid"/>, the segment) [b0, b1] of radius rb. 3D, or 2D separated: the axes' distance less
-        /// ra + rb, the witnesses pushed along the unit residual; axes that meet push along the common normal dA × dB, or
+        /// ra + rb, the witnesses pushed along the unit residual; axes that meet (to within 2^-49 of their extent, the
+        /// rounding of the residual) push along the common normal dA × dB, or
         /// for parallel axes along <see cref="AnyPerpendicular"/> of A's direction (a zero-length axis: of B's). 2D
         /// <paramref name="planar"/> solids whose axes cross: the Minkowski difference of the axes has an interior, and its
         /// depth (<see cref="Separation2"/>) adds to the radii.
@@ -203,6 +209,10 @@ namespace ProximityLib.Double
 
             double r = ra + rb, dist = Math.Sqrt(r2);
             inRange &= r <= double.MaxValue;
+            // A residual within 2^-49 of the axes' extent (from A's start) is rounding: its direction is noise (it can
+            // point along an axis), so the axes count as meeting.
+            double reach = Math.Max(Range.MaxAbs(b0 - a.Start), Math.Max(Range.MaxAbs(b1 - a.Start), Range.MaxAbs(a.End - a.Start)));
+            bool meet = dist <= reach * 1.7763568394002505e-15;
             Vector3D n;
             if (planar)
             {
@@ -210,14 +220,21 @@ namespace ProximityLib.Double
                 double g = Separation2(a, b, out var axis, out bool aFlat);
                 if (g < 0) return Crossing2(a, ra, b, rb, g, axis, aFlat);
                 // Touching axes have no residual: the separating axis orients the push (A lies on its + side).
-                n = v != default ? v * (1 / v.Length) : (axis != default ? -axis : Vector3D.UnitX);
+                n = !meet ? v * (1 / v.Length) : (axis != default ? -axis : Vector3D.UnitX);
             }
-            else if (v != default) n = v * (1 / v.Length);
+            else if (!meet) n = v * (1 / v.Length);
             else
             {
+                // Meeting axes: the common normal separates them whether they meet at interior points or endpoints
+                // (it is perpendicular to both), turned to agree with what residual there is.
+                // Directions scaled by powers of two first: the cross product of tiny or huge ones would underflow or
+                // overflow.
+                var dA = a.Dir;
                 var dB = b1 - b0;
-                var c = Vector3D.Cross(a.Dir, dB);
-                n = c != default ? c * (1 / c.Length) : AnyPerpendicular(a.Dir != default ? a.Dir : dB);
+                double mA = Range.MaxAbs(dA), mB = Range.MaxAbs(dB);
+                var c = mA > 0 && mB > 0 ? AccurateCross(dA * Num.InversePowerOfTwo(mA), dB * Num.InversePowerOfTwo(mB)) : default;
+                n = Unit(c, AnyPerpendicular(mA > 0 ? dA : dB));
+                if (Vector3D.Dot(n, v) < 0) n = -n;
             }
             double d = dist - r;
             return new DistanceResult3(d, d > 0 ? d * d : 0, pa + n * ra, pb - n * rb, s, t);

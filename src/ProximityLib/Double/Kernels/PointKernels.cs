@@ -77,12 +77,16 @@ namespace ProximityLib.Double
         /// The unit push-out direction from the segment's point toward p. For a point within 2^-30 of the segment's
         /// length of an interior point, the part of the residual along the segment is rounding (the exact residual of an
         /// interior projection is perpendicular to it), and it would otherwise turn the direction along the segment; it
-        /// is removed first.
+        /// is removed first. Within 2^-49 of the length there is nothing left but rounding: the direction is then
+        /// <see cref="AnyPerpendicular"/> of the segment, as for a point exactly on it.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Vector3D SegmentNormal(Vector3D r, double r2, double len, Vector3D a, Vector3D b, double t, double dd)
         {
-            if (t > 0 && t < 1 && r2 < dd * 8.673617379884035e-19)
+            // Within 2^-49 of the length the residual is all rounding, with no direction of its own: the point is on
+            // the segment.
+            if (t > 0 && t < 1 && r2 <= dd * 3.1554436208840472e-30) len = 0;
+            else if (t > 0 && t < 1 && r2 < dd * 8.673617379884035e-19)
             {
                 var d = b - a;
                 r -= d * (Vector3D.Dot(r, d) / dd);
@@ -117,10 +121,26 @@ namespace ProximityLib.Double
         /// <summary>A unit vector perpendicular to d, in the z = 0 plane whenever d is (so the 2D API stays planar); +X for d = 0.</summary>
         public static Vector3D AnyPerpendicular(Vector3D d)
         {
+            double m = Range.MaxAbs(d);
+            if (m > 0) d *= Num.InversePowerOfTwo(m); // exact, so tiny and huge directions get the same unit vector
             var n = new Vector3D(d.Y, -d.X, 0);
             if (n.LengthSquared == 0) n = new Vector3D(0, d.Z, -d.Y);
             double len = n.Length;
             return len > 0 ? n / len : Vector3D.UnitX;
+        }
+
+        /// <summary>
+        /// v normalised, or the fallback for a zero v. Scaled by a power of two first (exact), so |v|² neither overflows
+        /// nor underflows for any finite v: the witnesses' difference of a tiny gap, or a cross product of tiny or huge
+        /// directions, still gives a unit vector.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Vector3D Unit(Vector3D v, Vector3D fallback)
+        {
+            double m = Range.MaxAbs(v);
+            if (m == 0) return fallback;
+            v *= Num.InversePowerOfTwo(m);
+            return v / v.Length;
         }
 
         /// <summary>Point against sphere; <paramref name="inRange"/> tells whether the squared gap could be trusted (see <see cref="Range"/>).</summary>

@@ -12,15 +12,6 @@ namespace ProximityLib.Double
         /// <summary>2^-40: a point or segment (3D) is hit when the ray passes within this much of the local scale of it.</summary>
         public const double PassThrough = 9.094947017729282e-13;
 
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static Vector3D Unit(Vector3D v, Vector3D fallback)
-        {
-            double m = Range.MaxAbs(v);
-            if (m == 0) return fallback;
-            v *= Num.InversePowerOfTwo(m); // exact; |v|² then neither overflows nor underflows
-            return v / v.Length;
-        }
-
         /// <summary>
         /// Ray against a closed ball. The perpendicular distance h of the center from the line gives the half-chord
         /// √((r − h)(r + h)) without the cancellation of b² − c, and the entry is (|w|² − r²)/(−b + half-chord), the

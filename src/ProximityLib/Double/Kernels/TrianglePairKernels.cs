@@ -16,6 +16,10 @@ namespace ProximityLib.Double
         /// </summary>
         public static DistanceResult3 TriangleTriangle(Vector3D a0, Vector3D a1, Vector3D a2, Vector3D b0, Vector3D b1, Vector3D b2, out bool inRange)
         {
+            // In the frame of a0: a crossing or an edge point is then rounded at the configuration's scale, not at its
+            // distance from the world origin, so a translation adds no error.
+            var o = a0;
+            a0 = default; a1 -= o; a2 -= o; b0 -= o; b1 -= o; b2 -= o;
             double size2 = TriFrame.Size2(a0, a1, a2, b0, b1) + (b2 - a0).LengthSquared;
             double k = InverseSizeScale(size2);
             var fa = new TriFrame(a0, a1, a2, k);
@@ -35,7 +39,7 @@ namespace ProximityLib.Double
                 if (g < best) { best = g; pa = q; pb = x; }
             }
             inRange = (Range.In(size2) | (a0 == a1 & a0 == a2 & a0 == b0 & a0 == b1 & a0 == b2)) & (best == 0 | Range.In(best));
-            return new DistanceResult3(Math.Sqrt(best), best, pa, pb, 0, 0);
+            return new DistanceResult3(Math.Sqrt(best), best, pa + o, pb + o, 0, 0);
         }
 
         /// <summary>

@@ -158,8 +158,8 @@ namespace ProximityLib.Double
         /// witnesses, bit for bit). Exactly opposite normals: the signed gap na·(pb − pa) between the parallel boundaries,
         /// witnessed by the feet on both boundaries of the midpoint of the stored points. Otherwise the intersection is
         /// unbounded: −∞, with a common point: the midpoint of the stored points if each lies in the other half-space, else
-        /// the stored point that does, else the point of both boundaries nearest the midpoint (should that lie beyond the
-        /// double range, the midpoint).
+        /// the stored point that does, else a point of both near where the boundaries meet (<see cref="BoundaryMeet"/>;
+        /// should that lie beyond the double range, the midpoint).
         /// </summary>
         public static DistanceResult3 HalfSpaceHalfSpace(Vector3D na, Vector3D pa, Vector3D nb, Vector3D pb, out bool inRange)
         {
@@ -168,7 +168,8 @@ namespace ProximityLib.Double
             var m = pa * 0.5 + pb * 0.5;
             if (na == -nb)
             {
-                double gap = Vector3D.Dot(na, pb - pa); // swapped: (−na)·(−(pb − pa)), the same products
+                // Swapped: (−na)·(−(pb − pa)), the same products up to the signs of zero terms; + 0.0 makes a zero gap +0.
+                double gap = Vector3D.Dot(na, pb - pa) + 0.0;
                 inRange &= gap <= 0 | Range.In(gap * gap);
                 return new DistanceResult3(gap, gap > 0 ? gap * gap : 0, m - na * Vector3D.Dot(na, m - pa), m - nb * Vector3D.Dot(nb, m - pb), 0, 0);
             }
@@ -183,18 +184,39 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
-        /// The point of both boundaries nearest m: m + α·na + β·nb with na·(x − pa) = 0 = nb·(x − pb), a 2×2 system whose
-        /// determinant 1 − c² (c = na·nb) is formed as (1 − c)(1 + c). Symmetric in the two half-spaces bit for bit; m when
-        /// the point is not finite.
+        /// A point inside both half-spaces near where their boundaries meet: the point of both boundaries nearest m,
+        /// m + α·na + γ·q with q = L × na and L = na × nb the direction of the meeting line, so na·q = 0 and nb·q = |L|²;
+        /// then moved inward along −L × (na − nb), which lowers both heights at the rate |L|², should rounding have left
+        /// it outside either. Why this basis: for nearly parallel normals 1 − (na·nb)² cancels to noise (and, with normals
+        /// unit only to rounding, so do na·(na + nb) and the like), while L from <see cref="AccurateCross"/> keeps its full
+        /// relative precision however small it is, and so does every coefficient built from it. L is scaled by a power of
+        /// two so |L|² neither underflows nor overflows. The arguments are taken in a canonical order
+        /// (<see cref="Order.Swap(Vector3D, Vector3D, Vector3D, Vector3D)"/>), so swapping them gives the same point bit
+        /// for bit; m when the point is not finite.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static Vector3D BoundaryMeet(Vector3D na, Vector3D pa, Vector3D nb, Vector3D pb, Vector3D m)
         {
-            double c = Vector3D.Dot(na, nb), ea = Vector3D.Dot(na, pa - m), eb = Vector3D.Dot(nb, pb - m);
-            double det = (1 - c) * (1 + c);
-            double alpha = (ea - c * eb) / det, beta = (eb - c * ea) / det;
-            var x = m + (na * alpha + nb * beta);
-            return double.IsFinite(x.X) && double.IsFinite(x.Y) && double.IsFinite(x.Z) ? x : m;
+            if (Order.Swap(na, pa, nb, pb)) { var n = na; na = nb; nb = n; var p = pa; pa = pb; pb = p; }
+            var l = AccurateCross(na, nb);
+            double big = Range.MaxAbs(l);
+            if (!(big > 0)) return m;
+            double k = Num.InversePowerOfTwo(big); // big ≤ 2: the clamp never applies
+            l *= k;
+            double l2 = l.LengthSquared;
+            double ea = Vector3D.Dot(na, pa - m), eb = Vector3D.Dot(nb, pb - m);
+            double alpha = ea / na.LengthSquared;
+            // q = L × na at scale k: x − m = α·na + q·(eb − α·c)/|L|², the /k folded into the factor.
+            var x = m + (na * alpha + Vector3D.Cross(l, na) * ((eb - alpha * Vector3D.Dot(na, nb)) / l2 * k));
+            if (!(double.IsFinite(x.X) && double.IsFinite(x.Y) && double.IsFinite(x.Z))) return m;
+            double high = Math.Max(Vector3D.Dot(na, x - pa), Vector3D.Dot(nb, x - pb));
+            if (high > 0)
+            {
+                // −L × (na − nb) at scale k lowers each height at the rate |L|²/k.
+                var inside = x - Vector3D.Cross(l, na - nb) * (2 * high / l2 * k);
+                if (double.IsFinite(inside.X) && double.IsFinite(inside.Y) && double.IsFinite(inside.Z)) x = inside;
+            }
+            return x;
         }
 
         /// <summary>The distance of <see cref="HalfSpaceHalfSpace"/> alone (the same operations and <paramref name="inRange"/>).</summary>
@@ -204,7 +226,7 @@ namespace ProximityLib.Double
             var d = pb - pa;
             inRange = Range.Box(Range.MaxAbs(d));
             if (!(na == -nb)) return double.NegativeInfinity;
-            double gap = Vector3D.Dot(na, d);
+            double gap = Vector3D.Dot(na, d) + 0.0;
             inRange &= gap <= 0 | Range.In(gap * gap);
             return gap;
         }

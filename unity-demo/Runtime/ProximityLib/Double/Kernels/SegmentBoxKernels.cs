@@ -128,9 +128,9 @@ namespace ProximityLib.Double
                 return new DistanceResult3(Math.Sqrt(g), g, SegmentPoint(a, b, t), ClampToBox(box, la + ld * t), t, 0);
             }
 
-            double depth = Math.Max(0, SegmentBoxPenetration(la - c, ld, h, box.Planar, out var push));
+            double depth = Math.Max(0, SegmentBoxPenetration(la - c, ld, h, box.Planar, out var dir));
             // The segment moved by the push just touches the box: its closest pair there, the segment's point moved back.
-            var moved = la + push;
+            var moved = la + dir * depth;
             SegmentBoxLocal(moved, ld, lo, hi, out double tp);
             var onSegment = SegmentPoint(a, b, tp);
             return new DistanceResult3(-depth, 0, onSegment, depth > 0 ? ClampToBox(box, moved + ld * tp) : onSegment, tp, 0);
@@ -138,47 +138,49 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// The least push (box-local) that clears the segment m + [0, 1]·d (relative to the box centre) from the box of
-        /// half-extents h, over the box normals and the segment × box-edge directions (planar: the in-plane ones). A box
-        /// normal needs no normalising; on a segment × edge direction the whole segment projects to one value, and the
-        /// projections are divided by the direction's length once.
+        /// half-extents h, over the box normals and the segment × box-edge directions (planar: the in-plane ones): its
+        /// length (≤ 0 when the segment only touches the box, or misses it by rounding) and its unit direction
+        /// <paramref name="dir"/>, kept apart so a touching segment still has a separating direction. A box normal needs
+        /// no normalising; on a segment × edge direction the whole segment projects to one value, and the projections
+        /// are divided by the direction's length once.
         /// </summary>
-        private static double SegmentBoxPenetration(Vector3D m, Vector3D d, Vector3D h, bool planar, out Vector3D push)
+        private static double SegmentBoxPenetration(Vector3D m, Vector3D d, Vector3D h, bool planar, out Vector3D dir)
         {
             double best = double.PositiveInfinity;
-            push = default;
-            TryFaceAxis(m.X, d.X, h.X, Vector3D.UnitX, ref best, ref push);
-            TryFaceAxis(m.Y, d.Y, h.Y, Vector3D.UnitY, ref best, ref push);
-            TryCrossAxis(new Vector3D(d.Y, -d.X, 0), m.X * d.Y - m.Y * d.X, h.X * Math.Abs(d.Y) + h.Y * Math.Abs(d.X), ref best, ref push);
+            dir = default;
+            TryFaceAxis(m.X, d.X, h.X, Vector3D.UnitX, ref best, ref dir);
+            TryFaceAxis(m.Y, d.Y, h.Y, Vector3D.UnitY, ref best, ref dir);
+            TryCrossAxis(new Vector3D(d.Y, -d.X, 0), m.X * d.Y - m.Y * d.X, h.X * Math.Abs(d.Y) + h.Y * Math.Abs(d.X), ref best, ref dir);
             if (!planar)
             {
-                TryFaceAxis(m.Z, d.Z, h.Z, Vector3D.UnitZ, ref best, ref push);
-                TryCrossAxis(new Vector3D(0, d.Z, -d.Y), m.Y * d.Z - m.Z * d.Y, h.Y * Math.Abs(d.Z) + h.Z * Math.Abs(d.Y), ref best, ref push);
-                TryCrossAxis(new Vector3D(-d.Z, 0, d.X), m.Z * d.X - m.X * d.Z, h.X * Math.Abs(d.Z) + h.Z * Math.Abs(d.X), ref best, ref push);
+                TryFaceAxis(m.Z, d.Z, h.Z, Vector3D.UnitZ, ref best, ref dir);
+                TryCrossAxis(new Vector3D(0, d.Z, -d.Y), m.Y * d.Z - m.Z * d.Y, h.Y * Math.Abs(d.Z) + h.Z * Math.Abs(d.Y), ref best, ref dir);
+                TryCrossAxis(new Vector3D(-d.Z, 0, d.X), m.Z * d.X - m.X * d.Z, h.X * Math.Abs(d.Z) + h.Z * Math.Abs(d.X), ref best, ref dir);
             }
             return best;
         }
 
         /// <summary>A box normal n: the segment covers [m, m + d] along it, the box [−h, h].</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void TryFaceAxis(double m, double d, double h, Vector3D n, ref double best, ref Vector3D push)
+        private static void TryFaceAxis(double m, double d, double h, Vector3D n, ref double best, ref Vector3D dir)
         {
             double e = m + d;
             double down = Math.Max(m, e) + h; // moving the segment by −n·down clears the box
             double up = h - Math.Min(m, e);   // moving it by +n·up clears the box
-            if (down < best) { best = down; push = -n * down; }
-            if (up < best) { best = up; push = n * up; }
+            if (down < best) { best = down; dir = -n; }
+            if (up < best) { best = up; dir = n; }
         }
 
         /// <summary>A segment × box-edge direction (unnormalised): the segment projects to p along it, the box to [−r, r].</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void TryCrossAxis(Vector3D axis, double p, double r, ref double best, ref Vector3D push)
+        private static void TryCrossAxis(Vector3D axis, double p, double r, ref double best, ref Vector3D dir)
         {
             double len2 = axis.LengthSquared;
             if (!(len2 > 0) || double.IsInfinity(len2)) return;
             double len = Math.Sqrt(len2);
             double down = (p + r) / len, up = (r - p) / len;
-            if (down < best) { best = down; push = axis * (-down / len); }
-            if (up < best) { best = up; push = axis * (up / len); }
+            if (down < best) { best = down; dir = axis * (-1 / len); }
+            if (up < best) { best = up; dir = axis * (1 / len); }
         }
 
         /// <summary><see cref="SegmentBoxOverlaps(Vector3D, Vector3D, in Box)"/>, with whether the magnitudes allow the fast path.</summary>

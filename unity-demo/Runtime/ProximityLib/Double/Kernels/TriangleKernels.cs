@@ -305,11 +305,14 @@ namespace ProximityLib.Double
         /// <summary>Segment against a 3D triangle as a result; <paramref name="inRange"/>: the configuration's squared size and the squared distance are in the fast range (or exactly 0).</summary>
         public static DistanceResult3 SegmentTriangle(Vector3D p0, Vector3D p1, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
         {
+            // In the frame of a, so a translation adds no error (see TriangleTriangle).
+            var o = a;
+            a = default; b -= o; c -= o; p0 -= o; p1 -= o;
             double size2 = TriFrame.Size2(a, b, c, p0, p1);
             var f = new TriFrame(a, b, c, InverseSizeScale(size2));
             double g = SegmentTriangle(p0, p1, f, out double s, out var onSeg, out var onTri);
             inRange = (Range.In(size2) | (a == b & a == c & a == p0 & a == p1)) & (g == 0 | Range.In(g));
-            return new DistanceResult3(Math.Sqrt(g), g, onSeg, onTri, s, 0);
+            return new DistanceResult3(Math.Sqrt(g), g, onSeg + o, onTri + o, s, 0);
         }
 
         /// <summary>
@@ -375,31 +378,22 @@ namespace ProximityLib.Double
         /// </summary>
         public static DistanceResult3 CapsuleTriangle(Vector3D p0, Vector3D p1, double radius, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
         {
+            // In the frame of a, so a translation adds no error (see TriangleTriangle); the witnesses move back at the end.
+            var o = a;
+            a = default; b -= o; c -= o; p0 -= o; p1 -= o;
             double size2 = TriFrame.Size2(a, b, c, p0, p1);
             var f = new TriFrame(a, b, c, InverseSizeScale(size2));
             double g = SegmentTriangle(p0, p1, f, out double s, out var onSeg, out var onTri);
             inRange = (Range.In(size2) | (a == b & a == c & a == p0 & a == p1)) & (g == 0 | Range.In(g));
             if (g > 0)
             {
-                return Inflated(Math.Sqrt(g), onSeg, onTri, UnitOr(onSeg - onTri, f.Flat ? FlatPushDirection(p1 - p0, f) : f.Unit), s, radius);
+                return Inflated(Math.Sqrt(g), onSeg + o, onTri + o, Unit(onSeg - onTri, f.Flat ? FlatPushDirection(p1 - p0, f) : f.Unit), s, radius);
             }
             double depth = SegmentTrianglePenetration(p0, p1, f, out var dir);
             if (dir == default) dir = f.Flat ? FlatPushDirection(p1 - p0, f) : f.Unit;
             var push = dir * depth;
             SegmentTriangle(p0 + push, p1 + push, f, out s, out onSeg, out onTri);
-            return Inflated(-depth, onSeg - push, onTri, dir, s, radius);
-        }
-
-        /// <summary>
-        /// v normalised (scaled by a power of two first), or the fallback for a zero v. From the witness points, whose
-        /// difference for a tiny gap is mostly rounding: normalising it keeps the radius's offset exactly a radius long.
-        /// </summary>
-        private static Vector3D UnitOr(Vector3D v, Vector3D fallback)
-        {
-            double m = Range.MaxAbs(v);
-            if (m == 0) return fallback;
-            v *= Num.InversePowerOfTwo(m);
-            return v / v.Length;
+            return Inflated(-depth, onSeg - push + o, onTri + o, dir, s, radius);
         }
 
         /// <summary>A unit direction perpendicular to the axis d and to the longest edge of a flat triangle (any perpendicular when they are parallel).</summary>
@@ -450,7 +444,7 @@ namespace ProximityLib.Double
             if (apart)
             {
                 double d = Math.Sqrt(g);
-                dir = UnitOr(onSeg - onTri, AnyPerpendicular(Range.MaxAbs(p1 - p0) > 0 ? p1 - p0 : Longest(f)));
+                dir = Unit(onSeg - onTri, AnyPerpendicular(Range.MaxAbs(p1 - p0) > 0 ? p1 - p0 : Longest(f)));
                 return d;
             }
             var q0 = (p0 - f.A) * f.K;
