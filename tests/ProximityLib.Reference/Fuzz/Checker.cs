@@ -86,12 +86,18 @@ namespace ProximityReference.Fuzz
         public static List<Failure> Run(FuzzCase c, bool exact) => Run(c, exact, new HashSet<string>());
 
         /// <summary>As <see cref="Run(FuzzCase, bool)"/>, also naming the optional checks that ran (translation, scaling, exact, batch).</summary>
-        public static List<Failure> Run(FuzzCase c, bool exact, HashSet<string> ran)
+        public static List<Failure> Run(FuzzCase c, bool exact, HashSet<string> ran) => Run(c, exact, ran, out _);
+
+        /// <summary>As <see cref="Run(FuzzCase, bool, HashSet{string})"/>, also the largest E measured against the exact reference (both argument orders; −1 when it did not run).</summary>
+        public static List<Failure> Run(FuzzCase c, bool exact, HashSet<string> ran, out double worstE)
         {
             var k = new Checker(c, exact) { _ran = ran };
             if (k._fails.Count == 0) k.RunAll();
+            worstE = k._worstE;
             return k._fails;
         }
+
+        private double _worstE = -1;
 
         private HashSet<string> _ran = new HashSet<string>();
 
@@ -574,6 +580,7 @@ namespace ProximityReference.Fuzz
             {
                 if (!fine) continue;
                 var err = Rational.Abs(Rational.FromDouble(r.D) - exact);
+                _worstE = Math.Max(_worstE, (err / unit).ToDouble());
                 if (err > unit * Rational.FromDouble(_bound))
                     Fail("j E ≤ bound", $"{Orders[order]}: Distance = {N(r.D)}, {exactText}: E = {(err / unit).ToDouble():G4} > {_bound} (U = u·S + η = {_unit.ToDouble():G4}, S = {_s.ToDouble():G4})",
                         new[] { $"var r = ClosestDistance.{Orders[order]};", $"// got {Show(r)}" });

@@ -42,8 +42,19 @@ namespace ProximityReference.Fuzz
         public Dictionary<(string Pair, string Precision, string Invariant, string Generator), (long Count, Failure First)> Failures { get; } =
             new Dictionary<(string, string, string, string), (long, Failure)>();
 
-        public void Add(FuzzCase c, List<Failure> fails, bool exact, IEnumerable<string> ran)
+        /// <summary>Per pair and precision: the largest E against the exact reference, the cases it was measured on and the first case reaching it.</summary>
+        public Dictionary<(string Pair, string Precision), (double E, long Count, long Index, double Bound)> WorstE { get; } =
+            new Dictionary<(string, string), (double, long, long, double)>();
+
+        public void Add(FuzzCase c, List<Failure> fails, bool exact, IEnumerable<string> ran, double worstE = -1)
         {
+            if (worstE >= 0)
+            {
+                var p = (c.Pair, c.PrecisionName);
+                WorstE[p] = WorstE.TryGetValue(p, out var w)
+                    ? (worstE > w.E ? worstE : w.E, w.Count + 1, worstE > w.E || (worstE == w.E && c.Index < w.Index) ? c.Index : w.Index, w.Bound)
+                    : (worstE, 1, c.Index, c.Float ? 2 : Checker.Bound(c.A.Kind, c.B.Kind));
+            }
             foreach (var r in ran) Ran[r] = Ran.GetValueOrDefault(r) + 1;
             Cases++;
             if (exact) ExactCases++;
@@ -69,6 +80,11 @@ namespace ProximityReference.Fuzz
             FailedCases += o.FailedCases;
             foreach (var kv in o.Ran) Ran[kv.Key] = Ran.GetValueOrDefault(kv.Key) + kv.Value;
             foreach (var kv in o.CasesPerPair) CasesPerPair[kv.Key] = CasesPerPair.GetValueOrDefault(kv.Key) + kv.Value;
+            foreach (var kv in o.WorstE)
+                WorstE[kv.Key] = WorstE.TryGetValue(kv.Key, out var w)
+                    ? (Math.Max(w.E, kv.Value.E), w.Count + kv.Value.Count,
+                       kv.Value.E > w.E || (kv.Value.E == w.E && kv.Value.Index < w.Index) ? kv.Value.Index : w.Index, w.Bound)
+                    : kv.Value;
             foreach (var kv in o.Failures)
             {
                 if (Failures.TryGetValue(kv.Key, out var e))
@@ -79,6 +95,21 @@ namespace ProximityReference.Fuzz
         }
 
         public long FailureCount => Failures.Values.Sum(v => v.Count);
+
+        /// <summary>
+        /// The measured error table: per pair and precision, the cases checked against the exact reference, the largest E
+        /// over both argument orders, the promised bound and the case that reached it (replayable).
+        /// </summary>
+        public string FormatErrors()
+        {
+            var sb = new StringBuilder();
+            sb.AppendLine("| pair | precision | cases against the exact reference | max E | bound | worst case |");
+            sb.AppendLine("| --- | --- | --- | --- | --- | --- |");
+            foreach (var kv in WorstE.OrderBy(kv => kv.Key.Pair, StringComparer.Ordinal).ThenBy(kv => kv.Key.Precision, StringComparer.Ordinal))
+                sb.AppendLine($"| {kv.Key.Pair} | {kv.Key.Precision} | {kv.Value.Count} | {kv.Value.E.ToString("0.00", System.Globalization.CultureInfo.InvariantCulture)} | " +
+                              $"{kv.Value.Bound} | {Seed}:{kv.Value.Index} |");
+            return sb.ToString();
+        }
 
         /// <summary>The summary table (at most <paramref name="rows"/> rows, most frequent first) and the first <paramref name="repros"/> repros (one per row).</summary>
         public string Format(int repros, int rows = int.MaxValue)
@@ -184,9 +215,10 @@ namespace ProximityReference.Fuzz
                         bool exact = IsExact(c);
                         List<Failure> fails;
                         var ran = new HashSet<string>();
-                        try { fails = Checker.Run(c, exact, ran); }
+                        double worstE;
+                        try { fails = Checker.Run(c, exact, ran, out worstE); }
                         catch (Exception e) { throw new InvalidOperationException($"case {o.Seed}:{i} ({c.Pair} {c.PrecisionName}, {c.Generator}): {e.Message}", e); }
-                        local.Add(c, fails, exact, ran);
+                        local.Add(c, fails, exact, ran, worstE);
                     }
                     long d = Interlocked.Add(ref done, to - from);
                     if (o.Progress != null && clock.Elapsed - lastProgress > o.ProgressEvery)

@@ -58,13 +58,14 @@ namespace ProximityTests.Fuzz
         }
 
         /// <summary>
-        /// Cases the new-pair fuzz found (seed 5, 64,000 cases), each a defect fixed with it: half-space pairs with nearly
+        /// Cases the new-pair fuzz found (seeds 5 and 6, 64,000 cases each), each a defect fixed with it: half-space pairs with nearly
         /// parallel normals whose common point missed both boundaries (the 2×2 system's determinant cancelled; float up to
         /// 137 units off) and a −0 distance in one argument order; linear–capsule and point-like–linear pairs whose axes
         /// meet at rounding level, pushed along a residual that was noise (along the line itself: the push-out did not
         /// clear); a capsule whose axis touches a box pushed along a face normal that led the axis back in; a meeting-axes
         /// normal from a cross product that overflowed or underflowed (2^k scaling: NaN witnesses at 2^-402); triangle
-        /// crossings rounded at their world position (translation by 5e19 turned a 3e-8 gap into 0).
+        /// crossings rounded at their world position (translation by 5e19 turned a 3e-8 gap into 0); a line whose origin
+        /// lies far along it, where |p − o|² overflowed in the test for a residual at rounding level.
         /// </summary>
         [TestCase(5, 1000000006117, TestName = "HalfSpaces nearly opposite, both outside")]
         [TestCase(5, 1000000010997, TestName = "HalfSpaces nearly opposite, float")]
@@ -82,6 +83,7 @@ namespace ProximityTests.Fuzz
         [TestCase(5, 1000000012007, TestName = "Segment meeting a capsule's axis end, scaled 2^-402")]
         [TestCase(5, 1000000033153, TestName = "Nearly parallel triangles translated by 5e19")]
         [TestCase(5, 1000000033300, TestName = "Ray far along to a capsule, scaled 2^793")]
+        [TestCase(6, 1000000020972, TestName = "Line far along past a sphere, scaled 2^471")]
         public void CasesTheNewPairFuzzFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = Checker.Run(FuzzCase.Create(seed, index), exact: true);

@@ -48,12 +48,13 @@ namespace ProximityLib.Double
             var n = default(Vector3D);
             if (withNormal)
             {
-                double len = dist, w2 = w.LengthSquared;
-                // A residual within the rounding of w − d·t (≤ 2^-49·|w|) has no direction of its own (it can lie along
-                // d itself): the point is on the line. A larger one that is still small against |w| loses its part
-                // along d, the rounding of t.
-                if (t != 0 && r2 <= w2 * 3.1554436208840472e-30) len = 0;
-                else if (t != 0 && r2 < w2 * 8.673617379884035e-19) { r -= d * Vector3D.Dot(r, d); len = r.Length; }
+                double len = dist;
+                // A residual within the rounding of w − d·t (no component above 2^-50 of w's largest) has no direction
+                // of its own (it can lie along d itself): the point is on the line. A larger one that is still small
+                // against |w| loses its part along d, the rounding of t. Compared without squares: |w|² can overflow
+                // where the residual's cannot (a line whose origin lies far along it).
+                if (t != 0 && Range.MaxAbs(r) <= Range.MaxAbs(w) * 8.8817841970012523e-16) len = 0;
+                else if (t != 0 && r2 < w.LengthSquared * 8.673617379884035e-19) { r -= d * Vector3D.Dot(r, d); len = r.Length; }
                 n = len > 0 ? r * (1 / len) : AnyPerpendicular(d);
             }
             return new PointContact(dist, r2, o + d * t, n, t);
