@@ -143,6 +143,8 @@ md.AppendLine("local scale (largest coordinate difference between its defining p
 md.AppendLine("part of S). Float results are measured on the inputs rounded to float, against the exact answer for those inputs.");
 md.AppendLine("Double E covers both argument orders. Booleans must match the exact verdict whenever |d\\*| > 32·u·S.");
 md.AppendLine("The SIMD batch queries (`ProximityLib.Batch`, float lanes) are measured on the same float inputs; they promise E ≤ 8.");
+md.AppendLine("The pairs with lines, rays, capsules, triangles and half-spaces (issue 12) are measured by the differential fuzz against");
+md.AppendLine("the same exact reference: [accuracy-fuzz.md](accuracy-fuzz.md), every pair's max E against its bound.");
 md.AppendLine();
 md.AppendLine("## Per query: promised bound and measured error (all families)");
 md.AppendLine();

@@ -10,7 +10,8 @@ using System.Text.RegularExpressions;
 //     src/ProximityLib/Raycasts/<Shape>.g.cs from each src/ProximityLib/Raycasts/<Shape>.cs
 // dotnet run --project tests/ProximityLib.ApiGen -- check
 //     fail (exit 1) when a committed .g.cs differs from what sync would write, or has no hand-written source
-// Both also cover docs/catalogue.md, the paper's catalogue of pairs (docs/seed-pairs.csv) against the pair files.
+// Both also cover docs/catalogue.md, the paper's catalogue of pairs (docs/seed-pairs.csv) against the pair files, and
+// docs/pairs.md, every pair's and ray cast's contract as its kernel's summary states it.
 //
 // A ray-cast file holds internal kernels RayHit3/RayHit2 Core(Ray3/Ray2 ray, S shape, out bool inRange) in Raycast,
 // summary "First hit of a ray on {noun} ({n}D): …"; the public double Cast adds the range guard, the rescaling slow
@@ -32,18 +33,25 @@ namespace ProximityApiGen
             string pairs = Path.Combine(FindRepo(), "src", "ProximityLib", "Pairs");
             string raycasts = Path.Combine(FindRepo(), "src", "ProximityLib", "Raycasts");
             var wanted = new SortedDictionary<string, string>(StringComparer.Ordinal);
-            string catalogue;
+            string catalogue, pairsPage;
             try
             {
                 var kernels = new List<(string, string, string)>();
+                var contracts = new List<(string File, int Dim, string A, string B, string Summary)>();
                 foreach (var file in Sources(pairs))
                 {
                     wanted[Path.ChangeExtension(file, ".g.cs")] = Generator.Generate(Path.GetFileName(file), File.ReadAllText(file));
                     kernels.AddRange(Generator.Queries(Path.GetFileName(file), File.ReadAllText(file)));
+                    contracts.AddRange(Generator.Contracts(Path.GetFileName(file), File.ReadAllText(file)).Select(c => (Path.GetFileName(file), c.Dim, c.A, c.B, c.Summary)));
                 }
+                var casts = new List<(string File, string Summary)>();
                 foreach (var file in Sources(raycasts))
+                {
                     wanted[Path.ChangeExtension(file, ".g.cs")] = RayGenerator.Generate(Path.GetFileName(file), File.ReadAllText(file));
+                    casts.AddRange(RayGenerator.Contracts(Path.GetFileName(file), File.ReadAllText(file)).Select(c => (Path.GetFileName(file), c)));
+                }
                 catalogue = Catalogue.Generate(FindRepo(), kernels);
+                pairsPage = Contracts.Generate(contracts, casts);
             }
             catch (FormatException e)
             {
@@ -66,6 +74,11 @@ namespace ProximityApiGen
                         File.WriteAllText(Catalogue.Path(FindRepo()), catalogue);
                         Console.WriteLine("wrote docs/catalogue.md");
                     }
+                    if (!File.Exists(Contracts.Path(FindRepo())) || File.ReadAllText(Contracts.Path(FindRepo())) != pairsPage)
+                    {
+                        File.WriteAllText(Contracts.Path(FindRepo()), pairsPage);
+                        Console.WriteLine("wrote docs/pairs.md");
+                    }
                     Console.WriteLine($"{wanted.Count} generated files in sync");
                     return 0;
                 case "check":
@@ -73,6 +86,8 @@ namespace ProximityApiGen
                     problems.AddRange(wanted.Where(w => !File.Exists(w.Key) || File.ReadAllText(w.Key) != w.Value).Select(w => $"{Rel(w.Key)} is not what its source file generates"));
                     if (!File.Exists(Catalogue.Path(FindRepo())) || File.ReadAllText(Catalogue.Path(FindRepo())) != catalogue)
                         problems.Add("docs/catalogue.md is not what the pair files and docs/seed-pairs.csv generate");
+                    if (!File.Exists(Contracts.Path(FindRepo())) || File.ReadAllText(Contracts.Path(FindRepo())) != pairsPage)
+                        problems.Add("docs/pairs.md is not what the pair and ray-cast files generate");
                     foreach (var p in problems) Console.WriteLine($"api: {p}");
                     Console.WriteLine(problems.Count == 0
                         ? $"api: {wanted.Count} generated files in sync (pairs and ray casts)"
@@ -145,6 +160,10 @@ namespace ProximityApiGen
         private static readonly Regex Declaration = new Regex(
             @"^\s*internal static (?<result>\w+) (?<name>Core|DistanceCore)\((?<a>\w+) a, (?<b>\w+) b(?<guard>, out bool inRange)?\)");
         private static readonly Regex Class = new Regex(@"^\s*public static partial class (?<name>\w+)");
+
+        /// <summary>The contract of each public Between a pair file yields: (dimension, A, B as double type names, its summary).</summary>
+        public static IEnumerable<(int Dim, string A, string B, string Summary)> Contracts(string fileName, string source) =>
+            Parse(fileName, source).Where(k => k.Query == "Between").Select(k => (k.Dim, k.A.Double, k.B.Double, k.Summary!));
 
         /// <summary>The public queries a pair file yields: (Between or Overlaps, A, B) with the double type names.</summary>
         public static IEnumerable<(string Query, string A, string B)> Queries(string fileName, string source) =>
@@ -320,6 +339,15 @@ namespace ProximityApiGen
         private static readonly Regex Declaration = new Regex(
             @"^\s*internal static (?<result>RayHit[23]) Core\((?<ray>Ray[23]) ray, (?<b>\w+) shape, out bool inRange\)");
 
+        /// <summary>The summaries of a ray-cast file's kernels, in file order.</summary>
+        public static IEnumerable<string> Contracts(string fileName, string source)
+        {
+            var lines = source.Replace("\r\n", "\n").Split('\n');
+            for (int i = 0; i < lines.Length; i++)
+                if (Declaration.IsMatch(lines[i]))
+                    yield return Generator.SummaryAbove(lines, i) ?? throw new FormatException($"{fileName}:{i + 1}: a ray-cast kernel needs a summary");
+        }
+
         public static string Generate(string fileName, string source)
         {
             var lines = source.Replace("\r\n", "\n").Split('\n');
@@ -407,5 +435,61 @@ namespace ProximityApiGen
         /// <summary>A documented, inlined one-line method.</summary>
         public void Method(string summary, string line) { Doc(summary); Inline(); Line(line); }
         public override string ToString() => _text.ToString();
+    }
+
+    /// <summary>
+    /// docs/pairs.md: every pair's contract and every ray cast's, as the summaries of their kernels state them (the same
+    /// text the public overloads' XML docs carry), so the page cannot drift from the code.
+    /// </summary>
+    internal static class Contracts
+    {
+        public static string Path(string repo) => System.IO.Path.Combine(repo, "docs", "pairs.md");
+
+        public static string Generate(IReadOnlyList<(string File, int Dim, string A, string B, string Summary)> pairs, IReadOnlyList<(string File, string Summary)> casts)
+        {
+            var sb = new StringBuilder();
+            sb.Append("# Every pair's contract\n\n");
+            sb.Append("Generated by `dotnet run --project tests/ProximityLib.ApiGen -- sync` from the summaries of the kernels in\n");
+            sb.Append("`src/ProximityLib/Pairs/` and `src/ProximityLib/Raycasts/` (the text the public overloads' XML docs carry); `-- check`\n");
+            sb.Append("in CI fails when it is out of date. Each pair answers `ClosestDistance.Between` and `Distance` and\n");
+            sb.Append("`ProximityQuery.Overlaps` in both argument orders (the swapped call swaps the witnesses and parameters), in double\n");
+            sb.Append("(`ProximityLib.Double`) and float (`ProximityLib`). The result contract common to all is in [api.md](api.md#the-result-contract-distanceresult2-distanceresult3);\n");
+            sb.Append("the error bounds in [accuracy.md](accuracy.md) and [accuracy-fuzz.md](accuracy-fuzz.md).\n\n");
+            foreach (int dim in new[] { 3, 2 })
+            {
+                var rows = pairs.Where(p => p.Dim == dim).ToList();
+                sb.Append($"## {dim}D ({rows.Count} pairs)\n\n| pair | contract and algorithm | file |\n| --- | --- | --- |\n");
+                foreach (var p in rows)
+                {
+                    string text = Markdown(p.Summary);
+                    string head = "Closest distance between ";
+                    int colon = text.IndexOf(": ", StringComparison.Ordinal);
+                    string body = text.StartsWith(head, StringComparison.Ordinal) && colon > 0 ? text.Substring(colon + 2) : text;
+                    sb.Append($"| `{p.A}`–`{p.B}` | {Cap(body)} | [{p.File}](../src/ProximityLib/Pairs/{p.File}) |\n");
+                }
+                sb.Append('\n');
+            }
+            sb.Append($"## Ray casts ({casts.Count})\n\n`Raycast.Cast(ray, shape, maxDistance = ∞)`: the first hit within maxDistance.\n\n| target | contract and algorithm | file |\n| --- | --- | --- |\n");
+            foreach (var c in casts)
+            {
+                string text = Markdown(c.Summary);
+                int colon = text.IndexOf(": ", StringComparison.Ordinal);
+                string target = colon > 0 ? text.Substring(0, colon).Replace("First hit of a ray on ", "") : "";
+                sb.Append($"| {target} | {Cap(colon > 0 ? text.Substring(colon + 2) : text)} | [{c.File}](../src/ProximityLib/Raycasts/{c.File}) |\n");
+            }
+            return sb.ToString();
+        }
+
+        private static string Cap(string s) => s.Length == 0 ? s : char.ToUpperInvariant(s[0]) + s.Substring(1);
+
+        /// <summary>XML doc markup as Markdown: &lt;c&gt;x&lt;/c&gt; and &lt;see cref="x"/&gt; as code, entities decoded, pipes escaped.</summary>
+        private static string Markdown(string xml)
+        {
+            string s = Regex.Replace(xml, "<c>(.*?)</c>", "`$1`");
+            s = Regex.Replace(s, "<see cref=\"(?:[A-Za-z]:)?([^\"]*)\"\\s*/>", m => "`" + m.Groups[1].Value.Split('.').Last() + "`");
+            s = Regex.Replace(s, "<paramref name=\"([^\"]*)\"\\s*/>", "`$1`");
+            s = s.Replace("&lt;", "<").Replace("&gt;", ">").Replace("&amp;", "&");
+            return s.Replace("|", "\\|");
+        }
     }
 }
