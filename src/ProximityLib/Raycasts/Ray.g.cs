@@ -8,6 +8,13 @@ namespace ProximityLib.Double
 {
     public static partial class Raycast
     {
+        /// <summary>First hit of a ray on a ray (3D): zero thickness, so hit when the ray passes through the target ray, within <see cref="PassThroughTolerance"/> of the larger of |target.Origin − Origin| and the crossing's offset from Origin (largest coordinate): the origin on the target (T = 0), else the crossing point when it lies on the target, else the target's origin when it lies on the ray; Point on the target, Normal −Direction. Algorithm: the origin's residual from the target, and the lines' closest approach from cross products (Lagrange's identity), the target's parameter clamped at 0. A hit farther than maxDistance is a miss; a negative or NaN maxDistance throws System.ArgumentException.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static RayHit3 Cast(Ray3 ray, Ray3 shape, double maxDistance = double.PositiveInfinity)
+        {
+            var hit = Core(ray, shape, out bool inRange);
+            return RayHit3.Within(inRange ? hit : Slow(ray, shape), maxDistance);
+        }
         /// <summary>First hit of a ray on a ray (2D): the target ray is a wall the ray crosses (its origin included); Normal is its normal on the side the ray comes from; a ray running along the target hits at T = 0 when its origin lies on the target, else at the target's origin when that lies ahead, with Normal −Direction. Algorithm: T = ((target.Origin − Origin) × e) / (Direction × e), the target's parameter checked non-negative. A hit farther than maxDistance is a miss; a negative or NaN maxDistance throws System.ArgumentException.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static RayHit2 Cast(Ray2 ray, Ray2 shape, double maxDistance = double.PositiveInfinity)
@@ -17,6 +24,8 @@ namespace ProximityLib.Double
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
+        private static RayHit3 Slow(Ray3 ray, Ray3 shape) => Wide.Cast(ray, shape, static (x, y) => Core(x, y, out _));
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static RayHit2 Slow(Ray2 ray, Ray2 shape) => Wide.Cast(ray, shape, static (x, y) => Core(x, y, out _));
     }
 }
@@ -25,6 +34,9 @@ namespace ProximityLib
 {
     public static partial class Raycast
     {
+        /// <summary>First hit of a ray on a ray (3D), computed in double and rounded once: zero thickness, so hit when the ray passes through the target ray, within <see cref="PassThroughTolerance"/> of the larger of |target.Origin − Origin| and the crossing's offset from Origin (largest coordinate): the origin on the target (T = 0), else the crossing point when it lies on the target, else the target's origin when it lies on the ray; Point on the target, Normal −Direction. A hit farther than maxDistance is a miss; a negative or NaN maxDistance throws System.ArgumentException.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static RayHit3 Cast(Ray3 ray, Ray3 shape, float maxDistance = float.PositiveInfinity) => new RayHit3(Dbl.Raycast.Cast(ray.Inner, shape.Inner, maxDistance));
         /// <summary>First hit of a ray on a ray (2D), computed in double and rounded once: the target ray is a wall the ray crosses (its origin included); Normal is its normal on the side the ray comes from; a ray running along the target hits at T = 0 when its origin lies on the target, else at the target's origin when that lies ahead, with Normal −Direction. A hit farther than maxDistance is a miss; a negative or NaN maxDistance throws System.ArgumentException.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static RayHit2 Cast(Ray2 ray, Ray2 shape, float maxDistance = float.PositiveInfinity) => new RayHit2(Dbl.Raycast.Cast(ray.Inner, shape.Inner, maxDistance));

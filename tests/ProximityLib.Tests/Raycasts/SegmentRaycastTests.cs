@@ -37,6 +37,35 @@ namespace ProximityTests.Raycasts
         }
 
         [Test]
+        public void LinesAndRays3D()
+        {
+            IsHit(Raycast.Cast(AlongX, new Line3(V(3, -1, 0), V(0, 1, 0))), 3, V(3, 0, 0), V(-1, 0, 0));
+            Miss(Raycast.Cast(AlongX, new Line3(V(3, -1, 1e-3), V(0, 1, 0))));                        // skew, 1e-3 apart
+            IsHit(Raycast.Cast(AlongX, new Line3(V(5, 0, 0), V(1, 0, 0))), 0, V(0, 0, 0), V(-1, 0, 0));  // the ray on the line
+            Miss(Raycast.Cast(AlongX, new Line3(V(0, 1, 0), V(1, 0, 0))));                             // parallel
+            Miss(Raycast.Cast(AlongX, new Line3(V(-3, -1, 0), V(0, 1, 0))));                           // behind the origin
+            // Skew directions: the ray along (1, 2, 2)/3 meets the line through (0, 6, 6) along X at (3, 6, 6), 9 away.
+            var slanted = new Ray3(V(0, 0, 0), V(1, 2, 2));
+            IsHit(Raycast.Cast(slanted, new Line3(V(0, 6, 6), V(1, 0, 0))), 9, V(3, 6, 6), -slanted.Direction, 1e-14);
+            Miss(Raycast.Cast(slanted, new Line3(V(0, 6, 6.001), V(1, 0, 0))));
+
+            IsHit(Raycast.Cast(AlongX, new Ray3(V(3, -1, 0), V(0, 1, 0))), 3, V(3, 0, 0), V(-1, 0, 0));
+            Miss(Raycast.Cast(AlongX, new Ray3(V(3, 1, 0), V(0, 1, 0))));                              // the target starts past the ray
+            IsHit(Raycast.Cast(AlongX, new Ray3(V(3, 0, 0), V(0, 1, 0))), 3, V(3, 0, 0), V(-1, 0, 0));   // its origin on the ray
+            IsHit(Raycast.Cast(AlongX, new Ray3(V(2, 0, 0), V(1, 0, 0))), 2, V(2, 0, 0), V(-1, 0, 0));   // ahead, same way
+            IsHit(Raycast.Cast(AlongX, new Ray3(V(2, 0, 0), V(-1, 0, 0))), 0, V(0, 0, 0), V(-1, 0, 0));  // coming back through the origin
+            Miss(Raycast.Cast(AlongX, new Ray3(V(-2, 0, 0), V(-1, 0, 0))));                            // behind, going away
+            // Far from the world origin, the same answers (the tolerance follows the local scale).
+            var far = new Ray3(V(1e9, 1e9, 0), V(1, 0, 0));
+            IsHit(Raycast.Cast(far, new Line3(V(1e9 + 3, 1e9 - 1, 0), V(0, 1, 0))), 3, V(1e9 + 3, 1e9, 0), V(-1, 0, 0));
+            Miss(Raycast.Cast(far, new Line3(V(1e9 + 3, 1e9 - 1, 1e-3), V(0, 1, 0))));
+            // The float API rounds the double answer once.
+            var hf = ProximityLib.Raycast.Cast(new ProximityLib.Ray3(new System.Numerics.Vector3(0, 0, 0), new System.Numerics.Vector3(1, 0, 0)),
+                                               new ProximityLib.Line3(new System.Numerics.Vector3(3, -1, 0), new System.Numerics.Vector3(0, 1, 0)));
+            Assert.That(hf.Hit && hf.T == 3f && hf.Point == new System.Numerics.Vector3(3, 0, 0), hf.ToString());
+        }
+
+        [Test]
         public void Segments2DAreWalls()
         {
             IsHit(Raycast.Cast(AlongX2, new Segment2(V(1, -1), V(1, 1))), 1, V(1, 0), V(-1, 0));

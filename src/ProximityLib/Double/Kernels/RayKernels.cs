@@ -199,6 +199,41 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
+        /// Ray against a line or, when <paramref name="targetRay"/>, a ray (3D, zero thickness; p its origin, e its unit
+        /// direction): hit when the ray passes within <see cref="PassThrough"/> of the local scale (the larger of |p − o|
+        /// and the closest approach's offset from o, largest coordinate) of it. The earliest of: the origin on the target
+        /// (T = 0), the lines' closest approach (the target's parameter from cross products, as in
+        /// <see cref="RaySegment"/>) when it lies on the target, else a target ray's origin on the ray. Parallel: only the
+        /// origin on the target, or a target ray's origin ahead on the ray.
+        /// </summary>
+        public static RayHit3 RayLinear(Vector3D o, Vector3D d, Vector3D p, Vector3D e, bool targetRay, out bool inRange)
+        {
+            var w = p - o;
+            double m = Range.MaxAbs(w);
+            // The target's parameter at the closest approach; e and d are unit, so |e × d|² neither over- nor underflows
+            // unless they are parallel to rounding (then the approach is at infinity or everywhere).
+            var ed = Vector3D.Cross(e, d);
+            double den = ed.LengthSquared, s = 0;
+            bool skew = den > 0;
+            if (skew)
+            {
+                s = -Vector3D.Dot(Vector3D.Cross(w, d), ed) / den;
+                if (targetRay && s < 0) s = 0;
+                skew = Math.Abs(s) <= double.MaxValue / 4;
+            }
+            var q = skew && s != 0 ? w + e * s : w; // the approach's offset from o
+            m = Math.Max(m, Range.MaxAbs(q));
+            inRange = Range.Box(m);
+            double tol = PassThrough * m;
+            // The origin on the target: its residual from the target, by the point–line kernel.
+            var c = PointLinear(o, p, e, targetRay, false, out _);
+            if (c.Distance <= tol) return new RayHit3(0, c.Closest, -d, false);
+            if (skew && PassesThrough(q, d, m, out double t)) return new RayHit3(t, s != 0 ? p + e * s : p, -d, false);
+            if (!skew && targetRay && PassesThrough(w, d, m, out double tp)) return new RayHit3(tp, p, -d, false);
+            return RayHit3.Miss;
+        }
+
+        /// <summary>
         /// Ray against a two-sided triangle, watertight (Woop, Benthin and Wald, "Watertight Ray/Triangle Intersection",
         /// JCGT 2013): the vertices relative to the origin are sheared so the ray runs along the dominant axis, and the
         /// edge functions are 2D cross products of per-vertex values, so a shared edge gives both triangles the same value
