@@ -90,8 +90,19 @@ static int Picker(string[] args)
     }
     object first = options.First!, second = options.Second!;
     bool proximity = options.Proximity;
-    bool overlaps = ProximityQuery.Overlaps((dynamic)first, (dynamic)second);
-    dynamic r = ClosestDistance.Between((dynamic)first, (dynamic)second);
+    bool overlaps;
+    dynamic r;
+    try
+    {
+        overlaps = ProximityQuery.Overlaps((dynamic)first, (dynamic)second);
+        r = ClosestDistance.Between((dynamic)first, (dynamic)second);
+    }
+    catch (Microsoft.CSharp.RuntimeBinder.RuntimeBinderException)
+    {
+        // Every pair of same-dimension shapes has a query; this guards a shape added to the specs before its pairs.
+        Console.Error.WriteLine($"error: the library has no query for {first.GetType().Name} and {second.GetType().Name}");
+        return 2;
+    }
     if (options.SvgFile is string svg)
     {
         Vector3 To3(dynamic p) => p is Vector2 v ? new Vector3(v, 0) : (Vector3)p;

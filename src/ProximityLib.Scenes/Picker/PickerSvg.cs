@@ -63,7 +63,7 @@ namespace ProximityLib.Scenes.Picker
 
         private static Vector2 Xy(Vector3 p) => new Vector2(p.X, p.Y);
 
-        /// <summary>The outline of a shape's projection on z = 0: one point, a segment's two ends, or a convex polygon.</summary>
+        /// <summary>The outline of a shape's projection on z = 0: one point, a segment's (line's, ray's) two ends, or a convex polygon.</summary>
         private static List<Vector2> Outline(object shape)
         {
             switch (shape)
@@ -78,8 +78,39 @@ namespace ProximityLib.Scenes.Picker
                 case Aabb2 b: return Hull(Corners(new Vector3(b.Min, 0), new Vector3(b.Max, 0)));
                 case Obb3 b: return Hull(Corners(b.Center, b.AxisX * b.HalfExtents.X, b.AxisY * b.HalfExtents.Y, b.AxisZ * b.HalfExtents.Z));
                 case Obb2 b: return Hull(Corners(new Vector3(b.Center, 0), new Vector3(b.AxisX * b.HalfExtents.X, 0), new Vector3(b.AxisY * b.HalfExtents.Y, 0), Vector3.Zero));
+                // Unbounded shapes are drawn over a stretch of Reach around their stored point (the view frames the
+                // closest points too, so the part that matters is in it).
+                case Line3 l: return new List<Vector2> { Xy(l.Origin - l.Direction * Reach), Xy(l.Origin + l.Direction * Reach) };
+                case Line2 l: return new List<Vector2> { l.Origin - l.Direction * Reach, l.Origin + l.Direction * Reach };
+                case Ray3 r: return new List<Vector2> { Xy(r.Origin), Xy(r.Origin + r.Direction * Reach) };
+                case Ray2 r: return new List<Vector2> { r.Origin, r.Origin + r.Direction * Reach };
+                case Capsule3 c: return Hull(Circle(Xy(c.Start), c.Radius).Concat(Circle(Xy(c.End), c.Radius)));
+                case Capsule2 c: return Hull(Circle(c.Start, c.Radius).Concat(Circle(c.End, c.Radius)));
+                case Triangle3 t: return Hull(new[] { Xy(t.A), Xy(t.B), Xy(t.C) });
+                case Triangle2 t: return Hull(new[] { t.A, t.B, t.C });
+                case HalfPlane h: return HalfPlaneOutline(h.Point, h.Normal);
+                case HalfSpace h: return HalfSpaceOutline(h.Point, h.Normal);
                 default: throw new ArgumentException($"not a ProximityLib shape: {shape?.GetType().Name ?? "null"}", nameof(shape));
             }
+        }
+
+        /// <summary>How far an unbounded shape is drawn from its stored point, in the shapes' units.</summary>
+        private const float Reach = 4;
+
+        /// <summary>A half-plane as a Reach-wide strip of its boundary, Reach/2 deep into the solid.</summary>
+        private static List<Vector2> HalfPlaneOutline(Vector2 point, Vector2 normal)
+        {
+            var along = new Vector2(-normal.Y, normal.X) * Reach;
+            var down = -normal * (Reach / 2);
+            return new List<Vector2> { point - along, point + along, point + along + down, point - along + down };
+        }
+
+        /// <summary>A half-space as the projection of a slab of it: a square of its boundary, Reach on a side, and Reach/2 below.</summary>
+        private static List<Vector2> HalfSpaceOutline(Vector3 point, Vector3 normal)
+        {
+            var u = Vector3.Normalize(Math.Abs(normal.X) < 0.9f ? Vector3.Cross(normal, Vector3.UnitX) : Vector3.Cross(normal, Vector3.UnitY));
+            var v = Vector3.Cross(normal, u);
+            return Hull(Corners(point - normal * (Reach / 4), u * Reach, v * Reach, normal * (Reach / 4)));
         }
 
         private static List<Vector2> Circle(Vector2 c, float r) =>

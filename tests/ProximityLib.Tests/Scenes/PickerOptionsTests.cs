@@ -49,7 +49,7 @@ namespace ProximityTests.Scenes
         public void TheHelpListsEveryShapeFormWithAWorkingExampleAndStatesTheUnits()
         {
             var help = PickerOptions.HelpLines();
-            Assert.That(ShapeSpec.Forms, Has.Count.EqualTo(10));
+            Assert.That(ShapeSpec.Forms, Has.Count.EqualTo(20));
             foreach (var form in ShapeSpec.Forms)
             {
                 Assert.That(help.Any(l => l.Contains(form.Syntax) && l.Contains(form.Meaning)), form.Syntax);

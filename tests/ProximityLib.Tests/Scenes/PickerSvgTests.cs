@@ -48,6 +48,22 @@ namespace ProximityTests.Scenes
         }
 
         [Test]
+        public void TheNewShapesAreOutlined()
+        {
+            // A capsule (two end circles' hull), a triangle and a half-plane strip as polygons; a line as a two-point polygon.
+            var view = new PickerView(PickerMode.ClosestDistance, 0.5f, new Vector3(0, 0, 0), new Vector3(0, 0.5f, 0), false);
+            string svg = PickerSvg.Render(ShapeSpec.Parse("halfplane:0,1,0"), ShapeSpec.Parse("capsule:0,1,2,1,0.5"), view);
+            Assert.That(Regex.Matches(svg, "<polygon").Count, Is.EqualTo(2));
+            svg = PickerSvg.Render(ShapeSpec.Parse("line:0,3,1,0"), ShapeSpec.Parse("triangle:0,0,2,0,0,2"), view);
+            var polygons = Regex.Matches(svg, "<polygon points=\"([^\"]*)\"");
+            Assert.That(polygons.Count, Is.EqualTo(2));
+            Assert.That(polygons[0].Groups[1].Value.Split(' ').Length, Is.EqualTo(2), "the line: its two drawn ends");
+            Assert.That(polygons[1].Groups[1].Value.Split(' ').Length, Is.EqualTo(3), "the triangle: its three corners");
+            svg = PickerSvg.Render(ShapeSpec.Parse("halfspace:0,1,0,0"), ShapeSpec.Parse("ray:0,2,0,1,0,0"), view);
+            Assert.That(Regex.Matches(svg, "<polygon").Count, Is.EqualTo(2));
+        }
+
+        [Test]
         public void ATurnedBoxIsOutlinedByItsProjection()
         {
             // A cube turned 45° about y shows a rectangle √2 times wider than tall: 4 hull points, not 8 corners.

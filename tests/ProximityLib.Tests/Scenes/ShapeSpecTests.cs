@@ -25,6 +25,33 @@ namespace ProximityTests.Scenes
             Assert.That(ShapeSpec.Dimension(ShapeSpec.Parse("obb:0,0,0,0,0,0,1,1,2,3")), Is.EqualTo(3));
         }
 
+        [Test]
+        public void ParsesTheNewShapes()
+        {
+            var line = (F.Line3)ShapeSpec.Parse("line:0,2,0,3,0,0");
+            Assert.That(line.Origin, Is.EqualTo(new Vector3(0, 2, 0)));
+            Assert.That(line.Direction, Is.EqualTo(new Vector3(1, 0, 0)), "normalised");
+            Assert.That(((F.Line2)ShapeSpec.Parse("line:0,2,0,-5")).Direction, Is.EqualTo(new Vector2(0, -1)));
+            Assert.That(((F.Ray3)ShapeSpec.Parse("ray:-3,0,0,1,0,0")).Origin, Is.EqualTo(new Vector3(-3, 0, 0)));
+            Assert.That(((F.Ray2)ShapeSpec.Parse("ray:-3,0,2,0")).Direction, Is.EqualTo(new Vector2(1, 0)));
+            var c3 = (F.Capsule3)ShapeSpec.Parse("capsule:0,0,0,0,2,0,0.5");
+            Assert.That((c3.End, c3.Radius), Is.EqualTo((new Vector3(0, 2, 0), 0.5f)));
+            Assert.That(((F.Capsule2)ShapeSpec.Parse("capsule:0,0,2,0,0.25")).Radius, Is.EqualTo(0.25f));
+            Assert.That(((F.Triangle3)ShapeSpec.Parse("triangle:0,0,0,2,0,0,0,2,0")).C, Is.EqualTo(new Vector3(0, 2, 0)));
+            Assert.That(((F.Triangle2)ShapeSpec.Parse("triangle:0,0,2,0,0,2")).B, Is.EqualTo(new Vector2(2, 0)));
+            var h = (F.HalfSpace)ShapeSpec.Parse("halfspace:0,2,0,3");
+            Assert.That((h.Normal, h.Offset), Is.EqualTo((new Vector3(0, 1, 0), 1.5f)), "the normal is normalised, the offset with it");
+            Assert.That(((F.HalfPlane)ShapeSpec.Parse("halfplane:0,1,0")).Normal, Is.EqualTo(new Vector2(0, 1)));
+            foreach (var (spec, dim) in new[] { ("line:0,2,1,0", 2), ("ray:0,0,1,0", 2), ("capsule:0,0,2,0,1", 2), ("triangle:0,0,2,0,0,2", 2), ("halfplane:0,1,0", 2),
+                                                ("line:0,2,0,1,0,0", 3), ("ray:0,0,0,1,0,0", 3), ("capsule:0,0,0,0,2,0,1", 3), ("triangle:0,0,0,2,0,0,0,2,0", 3), ("halfspace:0,1,0,0", 3) })
+                Assert.That(ShapeSpec.Dimension(ShapeSpec.Parse(spec)), Is.EqualTo(dim), spec);
+        }
+
+        [TestCase("line:0,0,0,0", "direction")]
+        [TestCase("ray:0,0,0,1,0", "ray takes 4 or 6 numbers, not 5")]
+        [TestCase("capsule:0,0,2,0,-1", "radius")]
+        [TestCase("halfspace:0,0,0,1", "normal")]
+        [TestCase("plane:0,1,0", "unknown kind 'plane' (point, segment, circle, sphere, aabb, obb, line, ray, capsule, triangle, halfplane, halfspace)")]
         [TestCase("sphere", "expected kind:numbers")]
         [TestCase("cube:1,2,3", "unknown kind 'cube'")]
         [TestCase("sphere:0,0,zero,1", "'zero' is not a finite number")]

@@ -39,9 +39,18 @@ namespace ProximityLib.Scenes.Picker
                     ("aabb", 6) => new Aabb3(new Vector3(n[0], n[1], n[2]), new Vector3(n[3], n[4], n[5])),
                     ("obb", 5) => new Obb2(new Vector2(n[0], n[1]), n[2], new Vector2(n[3], n[4])),
                     ("obb", 10) => (object)new Obb3(new Vector3(n[0], n[1], n[2]), new Quaternion(n[3], n[4], n[5], n[6]), new Vector3(n[7], n[8], n[9])),
-                    ("point", _) or ("segment", _) or ("circle", _) or ("sphere", _) or ("aabb", _) or ("obb", _) =>
-                        throw new FormatException($"'{text}': {kind} takes {Counts(kind)} numbers, not {n.Length}"),
-                    _ => throw new FormatException($"'{text}': unknown kind '{kind}' (point, segment, circle, sphere, aabb, obb)"),
+                    ("line", 4) => new Line2(new Vector2(n[0], n[1]), new Vector2(n[2], n[3])),
+                    ("line", 6) => new Line3(new Vector3(n[0], n[1], n[2]), new Vector3(n[3], n[4], n[5])),
+                    ("ray", 4) => new Ray2(new Vector2(n[0], n[1]), new Vector2(n[2], n[3])),
+                    ("ray", 6) => new Ray3(new Vector3(n[0], n[1], n[2]), new Vector3(n[3], n[4], n[5])),
+                    ("capsule", 5) => new Capsule2(new Vector2(n[0], n[1]), new Vector2(n[2], n[3]), n[4]),
+                    ("capsule", 7) => new Capsule3(new Vector3(n[0], n[1], n[2]), new Vector3(n[3], n[4], n[5]), n[6]),
+                    ("triangle", 6) => new Triangle2(new Vector2(n[0], n[1]), new Vector2(n[2], n[3]), new Vector2(n[4], n[5])),
+                    ("triangle", 9) => new Triangle3(new Vector3(n[0], n[1], n[2]), new Vector3(n[3], n[4], n[5]), new Vector3(n[6], n[7], n[8])),
+                    ("halfplane", 3) => new HalfPlane(new Vector2(n[0], n[1]), n[2]),
+                    ("halfspace", 4) => new HalfSpace(new Vector3(n[0], n[1], n[2]), n[3]),
+                    _ when Known(kind) => throw new FormatException($"'{text}': {kind} takes {Counts(kind)} numbers, not {n.Length}"),
+                    _ => throw new FormatException($"'{text}': unknown kind '{kind}' ({string.Join(", ", Kinds())})"),
                 };
             }
             catch (ArgumentException e)
@@ -51,7 +60,9 @@ namespace ProximityLib.Scenes.Picker
         }
 
         /// <summary>2 for 2D shapes, 3 for 3D ones.</summary>
-        public static int Dimension(object shape) => shape is Vector2 || shape is Segment2 || shape is Circle || shape is Aabb2 || shape is Obb2 ? 2 : 3;
+        public static int Dimension(object shape) =>
+            shape is Vector2 || shape is Segment2 || shape is Circle || shape is Aabb2 || shape is Obb2
+            || shape is Line2 || shape is Ray2 || shape is Capsule2 || shape is Triangle2 || shape is HalfPlane ? 2 : 3;
 
         /// <summary>Every form <see cref="Parse"/> accepts, with what its numbers mean and an example; the picker's help lists them.</summary>
         public static IReadOnlyList<ShapeForm> Forms { get; } = new[]
@@ -69,7 +80,32 @@ namespace ProximityLib.Scenes.Picker
             new ShapeForm("obb:cx,cy,cz,qx,qy,qz,qw,hx,hy,hz",
                 "oriented box: centre, rotation quaternion in x,y,z,w order (w last; normalised here), half-extents",
                 "obb:3,0,0,0,0,0.3826834,0.9238795,1,1,1"),
+            new ShapeForm("line:x,y,dx,dy", "2D line: a point on it, a direction (any non-zero length)", "line:0,2,1,0"),
+            new ShapeForm("line:x,y,z,dx,dy,dz", "3D line: a point on it, a direction (any non-zero length)", "line:0,2,0,1,0,0"),
+            new ShapeForm("ray:x,y,dx,dy", "2D ray: origin, direction (any non-zero length)", "ray:-3,0,1,0"),
+            new ShapeForm("ray:x,y,z,dx,dy,dz", "3D ray: origin, direction (any non-zero length)", "ray:-3,0,0,1,0,0"),
+            new ShapeForm("capsule:x1,y1,x2,y2,r", "2D capsule (stadium): axis from (x1,y1) to (x2,y2), radius (>= 0)", "capsule:0,0,2,0,0.5"),
+            new ShapeForm("capsule:x1,y1,z1,x2,y2,z2,r", "3D capsule: axis from (x1,y1,z1) to (x2,y2,z2), radius (>= 0)", "capsule:0,0,0,0,2,0,0.5"),
+            new ShapeForm("triangle:ax,ay,bx,by,cx,cy", "2D solid triangle: three vertices", "triangle:0,0,2,0,0,2"),
+            new ShapeForm("triangle:ax,ay,az,bx,by,bz,cx,cy,cz", "3D triangle (two-sided, not solid): three vertices", "triangle:0,0,0,2,0,0,0,2,0"),
+            new ShapeForm("halfplane:nx,ny,d", "2D half-plane: the solid nx·x + ny·y <= d (normal any non-zero length)", "halfplane:0,1,0"),
+            new ShapeForm("halfspace:nx,ny,nz,d", "3D half-space: the solid n·p <= d (normal any non-zero length)", "halfspace:0,1,0,0"),
         };
+
+        private static bool Known(string kind)
+        {
+            foreach (var form in Forms)
+                if (form.Kind == kind) return true;
+            return false;
+        }
+
+        private static IEnumerable<string> Kinds()
+        {
+            var seen = new List<string>();
+            foreach (var form in Forms)
+                if (!seen.Contains(form.Kind)) seen.Add(form.Kind);
+            return seen;
+        }
 
         private static string Counts(string kind)
         {
@@ -91,7 +127,7 @@ namespace ProximityLib.Scenes.Picker
             Count = syntax.Substring(colon + 1).Split(',').Length;
         }
 
-        /// <summary>The kind before the colon (point, segment, circle, sphere, aabb, obb).</summary>
+        /// <summary>The kind before the colon (point, segment, circle, sphere, aabb, obb, line, ray, capsule, triangle, halfplane, halfspace).</summary>
         public string Kind { get; }
         /// <summary>The form, e.g. <c>circle:x,y,r</c>.</summary>
         public string Syntax { get; }
