@@ -83,6 +83,10 @@ namespace ProximityTests.Pairs
         {
             var ra = Ref(a, out var rA);
             var rb = Ref(b, out var rB);
+            // A line or ray against a bounded shape: its exact clipped segment (the reference's Clip; exact for distance,
+            // meeting and depth).
+            if (ra.IsLinear) ra = Exact.Clip(ra, rb);
+            else if (rb.IsLinear) rb = Exact.Clip(rb, ra);
             Rational sd;
             if (Exact.Intersects(ra, rb)) sd = IsSolid(a) || IsSolid(b) ? -Rational.Sqrt(Exact.Depth2(ra, rb)) : Rational.Zero;
             else
@@ -165,21 +169,29 @@ namespace ProximityTests.Pairs
         /// <summary>2^k-scaled inputs give 2^k-scaled answers bit for bit, for every k given (the slow path included).</summary>
         public static void CheckScaling(object a, object b, string at, params int[] ks)
         {
-            var r = Between(a, b);
+            // Against the copy scaled by 1: a line's direction is normalised again on construction, as in every scaled copy.
+            var r = Between(Scaled(a, 1), Scaled(b, 1));
             foreach (int k in ks)
             {
                 double f = Math.Pow(2, k);
                 var q = Between(Scaled(a, f), Scaled(b, f));
-                string w = $"{at} 2^{k}: {r} vs {q}";
+                string w = $"{at} {a} | {b} 2^{k}: {r} vs {q}";
                 Assert.That(q.Distance, Is.EqualTo(r.Distance * f), w);
                 Assert.That(q.PointA == r.PointA * f && q.PointB == r.PointB * f, Is.True, w);
-                Assert.That(q.ParameterA == r.ParameterA && q.ParameterB == r.ParameterB, Is.True, w);
-                Assert.That((bool)ProximityQuery.Overlaps((dynamic)Scaled(a, f), (dynamic)Scaled(b, f)), Is.EqualTo((bool)ProximityQuery.Overlaps((dynamic)a, (dynamic)b)), w);
+                // A line's or ray's parameter is a length: it scales too.
+                Assert.That(q.ParameterA == r.ParameterA * (IsLinear(a) ? f : 1) && q.ParameterB == r.ParameterB * (IsLinear(b) ? f : 1), Is.True, w);
+                Assert.That((bool)ProximityQuery.Overlaps((dynamic)Scaled(a, f), (dynamic)Scaled(b, f)), Is.EqualTo((bool)ProximityQuery.Overlaps((dynamic)Scaled(a, 1), (dynamic)Scaled(b, 1))), w);
             }
         }
 
+        private static bool IsLinear(object shape) => shape is Line3 || shape is Line2 || shape is Ray3 || shape is Ray2;
+
         public static object Scaled(object shape, double f) => shape switch
         {
+            Line3 l => new Line3(l.Origin * f, l.Direction),
+            Line2 l => new Line2(l.Origin * f, l.Direction),
+            Ray3 l => new Ray3(l.Origin * f, l.Direction),
+            Ray2 l => new Ray2(l.Origin * f, l.Direction),
             Vector3D p => p * f,
             Vector2D p => p * f,
             Segment3 s => new Segment3(s.Start * f, s.End * f),
