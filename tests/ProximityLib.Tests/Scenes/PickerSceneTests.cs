@@ -19,6 +19,26 @@ namespace ProximityTests.Scenes
                         yield return new TestCaseData(dim, a, b).SetArgDisplayNames($"{dim}D", a.ToString(), b.ToString());
         }
 
+        [Test]
+        public void TheNewKindsHaveTheirDocumentedBaseShapes()
+        {
+            // A capsule at height 2 (axis along x, radius 0.5) above the ground half-space through the origin: 1.5 apart.
+            var capsule = new Primitive(PrimitiveKind.Capsule, 3, new Vector3(0, 2, 0));
+            var ground = new Primitive(PrimitiveKind.HalfSpace, 3, Vector3.Zero);
+            var view = new PickerScene(PickerMode.ClosestDistance, capsule, ground).Evaluate();
+            Assert.That(view.Distance, Is.EqualTo(1.5f).Within(1e-6f));
+            Assert.That(view.PointB.Y, Is.EqualTo(0f).Within(1e-6f));
+            // A 2D triangle scaled 2: corners (−2, −1), (2, −1), (0, 1.5); a ray from (0, −3) up along y (yaw 90°) enters at y = −1.
+            var tri = new Primitive(PrimitiveKind.Triangle, 2, Vector3.Zero, 0, 0, 2);
+            Assert.That(((F.Triangle2)tri.Shape).C, Is.EqualTo(new Vector2(0, 1.5f)));
+            var ray = new Primitive(PrimitiveKind.Ray, 2, new Vector3(0, -3, 0), MathF.PI / 2);
+            Assert.That(new PickerScene(PickerMode.ProximityQuery, ray, tri).Evaluate().Colliding, Is.True);
+            // A line along x at y = 3 misses it by 1.5; a 2D half-plane's name says so.
+            var line = new Primitive(PrimitiveKind.Line, 2, new Vector3(0, 3, 0));
+            Assert.That(new PickerScene(PickerMode.ClosestDistance, line, tri).Evaluate().Distance, Is.EqualTo(1.5f).Within(1e-6f));
+            Assert.That(new Primitive(PrimitiveKind.HalfSpace, 2, Vector3.Zero).Name, Is.EqualTo("2D half-plane"));
+        }
+
         [TestCaseSource(nameof(Pairs))]
         public void BothModesShowWhatTheLibraryComputes(int dim, PrimitiveKind ka, PrimitiveKind kb)
         {

@@ -103,6 +103,7 @@ namespace UnityEngine
         public float startWidth { get; set; }
         public float endWidth { get; set; }
         public int positionCount { get; set; }
+        public bool loop { get; set; }
         public void SetPosition(int index, Vector3 position) { }
     }
 
@@ -171,6 +172,7 @@ namespace UnityEngine
         public static Quaternion Euler(float x, float y, float z) => identity;
         public static Quaternion LookRotation(Vector3 forward, Vector3 upwards) => identity;
         public static Vector3 operator *(Quaternion rotation, Vector3 point) => point;
+        public static Quaternion operator *(Quaternion lhs, Quaternion rhs) => lhs;
     }
 
     public struct Color

@@ -145,8 +145,19 @@ namespace ProximityLib.Unity
             if (visual == null || _shown[which] != p.Kind || _shownDimension[which] != p.Dimension)
             {
                 if (visual != null) Destroy(visual);
-                visual = GameObject.CreatePrimitive(p.Kind == PrimitiveKind.Round ? (p.Dimension == 2 ? PrimitiveType.Cylinder : PrimitiveType.Sphere)
-                    : p.Kind == PrimitiveKind.Point ? PrimitiveType.Sphere : PrimitiveType.Cube);
+                if (p.Kind == PrimitiveKind.Triangle)
+                {
+                    // A triangle is drawn as its closed outline: no mesh asset or lit material needed.
+                    visual = new GameObject(p.Name);
+                    var outline = visual.AddComponent<LineRenderer>();
+                    outline.material = new Material(Shader.Find("Sprites/Default"));
+                    outline.startWidth = outline.endWidth = 0.04f;
+                    outline.positionCount = 3;
+                    outline.loop = true;
+                }
+                else
+                    visual = GameObject.CreatePrimitive(p.Kind == PrimitiveKind.Round ? (p.Dimension == 2 ? PrimitiveType.Cylinder : PrimitiveType.Sphere)
+                        : p.Kind == PrimitiveKind.Point ? PrimitiveType.Sphere : p.Kind == PrimitiveKind.Capsule ? PrimitiveType.Capsule : PrimitiveType.Cube);
                 visual.name = p.Name;
                 _visuals[which] = visual;
                 _shown[which] = p.Kind;
@@ -172,6 +183,30 @@ namespace ProximityLib.Unity
                     // Unity's cylinder stands along y with height 2: turned to face the camera, it is a disc.
                     t.rotation = p.Dimension == 2 ? Quaternion.Euler(90, 0, 0) : Quaternion.identity;
                     t.localScale = p.Dimension == 2 ? new Vector3(2 * s, thin, 2 * s) : Vector3.one * (2 * s);
+                    break;
+                case PrimitiveKind.Line:
+                case PrimitiveKind.Ray:
+                    // Unbounded: drawn 8 units out (a line both ways), as a thin bar along the turned x axis.
+                    t.rotation = rotation;
+                    t.localScale = new Vector3(p.Kind == PrimitiveKind.Line ? 16 : 8, 0.04f, 0.04f);
+                    if (p.Kind == PrimitiveKind.Ray) t.position = (p.Position + System.Numerics.Vector3.Transform(System.Numerics.Vector3.UnitX, p.Rotation) * 4).ToUnity();
+                    break;
+                case PrimitiveKind.Capsule:
+                    // Unity's capsule stands along y, radius 0.5 and height 2 (caps included) at scale 1: turned onto the
+                    // x axis, its axis half-length s and radius s/2 give a height of 3s.
+                    t.rotation = rotation * Quaternion.Euler(0, 0, 90);
+                    t.localScale = new Vector3(s, 1.5f * s, p.Dimension == 2 ? thin : s);
+                    break;
+                case PrimitiveKind.Triangle:
+                    var corners = visual.GetComponent<LineRenderer>();
+                    for (int i = 0; i < 3; i++)
+                        corners.SetPosition(i, (p.Position + System.Numerics.Vector3.Transform(Primitive.TriangleCorners[i], p.Rotation) * s).ToUnity());
+                    break;
+                case PrimitiveKind.HalfSpace:
+                    // A slab 16 wide and 2 deep below the boundary (its normal is the turned y axis).
+                    t.rotation = rotation;
+                    t.position = (p.Position - System.Numerics.Vector3.Transform(System.Numerics.Vector3.UnitY, p.Rotation)).ToUnity();
+                    t.localScale = new Vector3(16, 2, p.Dimension == 2 ? thin : 16);
                     break;
                 default:
                     t.rotation = p.Kind == PrimitiveKind.Aabb ? Quaternion.identity : rotation;
