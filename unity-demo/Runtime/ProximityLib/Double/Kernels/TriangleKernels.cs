@@ -185,11 +185,17 @@ namespace ProximityLib.Double
         /// otherwise the exact value is summed without error. Exactness matters here: a triangle with any area is a solid
         /// (a segment crossing a sliver is inside it by up to the sliver's length), a flat one is the segment it is.
         /// </summary>
-        private static double Area2(in TriFrame f)
+        private static double Area2(in TriFrame f) => Area2(f, f.A, f.B, f.C);
+
+        /// <summary>
+        /// <see cref="Area2(in TriFrame)"/> for a frame built on the vertices moved (rounded) into another frame: the edges
+        /// E1, E2 are the rounded differences of the given vertices a, b, c either way, and the exact sign is theirs.
+        /// </summary>
+        private static double Area2(in TriFrame f, Vector3D a, Vector3D b, Vector3D c)
         {
             double area = DiffOfProducts(f.E1.X, f.E2.Y, f.E1.Y, f.E2.X);
             if (Math.Abs(area) > 4.440892098500626e-16 * (Math.Abs(f.E1.X * f.E2.Y) + Math.Abs(f.E1.Y * f.E2.X))) return Math.Sign(area);
-            return OrientationSign(f.A, f.B, f.C, f.K);
+            return OrientationSign(a, b, c, f.K);
         }
 
         /// <summary>
@@ -277,16 +283,7 @@ namespace ProximityLib.Double
         /// </summary>
         public static double SegmentTriangle(Vector3D p0, Vector3D p1, in TriFrame f, out double s, out Vector3D onSeg, out Vector3D onTri)
         {
-            if (!f.Flat)
-            {
-                double h0 = Vector3D.Dot((p0 - f.A) * f.K, f.N), h1 = Vector3D.Dot((p1 - f.A) * f.K, f.N);
-                if (h0 != h1 && (h0 <= 0 ? h1 >= 0 : h1 <= 0))
-                {
-                    double t = h0 / (h0 - h1);
-                    var x = SegmentPoint(p0, p1, t);
-                    if (f.Inside(x)) { s = t; onSeg = onTri = x; return 0; }
-                }
-            }
+            if (Crossing(p0, p1, f, out s, out onSeg)) { onTri = onSeg; return 0; }
             var c = PointTriangle(p0, f, out _);
             double best = c.DistanceSquared;
             s = 0; onSeg = p0; onTri = c.Closest;
@@ -300,6 +297,27 @@ namespace ProximityLib.Double
                 if (g < best) { best = g; s = se + 0; onSeg = SegmentPoint(p0, p1, se); onTri = SegmentPoint(v0, v1, te); }
             }
             return best;
+        }
+
+        /// <summary>
+        /// Whether segment [p0, p1] crosses the plane of a non-flat triangle inside it (its ends on either side or on it,
+        /// the crossing on the inner side of every edge): the parameter <paramref name="s"/> and the point.
+        /// </summary>
+        private static bool Crossing(Vector3D p0, Vector3D p1, in TriFrame f, out double s, out Vector3D x)
+        {
+            if (!f.Flat)
+            {
+                double h0 = Vector3D.Dot((p0 - f.A) * f.K, f.N), h1 = Vector3D.Dot((p1 - f.A) * f.K, f.N);
+                if (h0 != h1 && (h0 <= 0 ? h1 >= 0 : h1 <= 0))
+                {
+                    s = h0 / (h0 - h1);
+                    x = SegmentPoint(p0, p1, s);
+                    if (f.Inside(x)) return true;
+                }
+            }
+            s = 0;
+            x = default;
+            return false;
         }
 
         /// <summary>Segment against a 3D triangle as a result; <paramref name="inRange"/>: the configuration's squared size and the squared distance are in the fast range (or exactly 0).</summary>
@@ -425,9 +443,12 @@ namespace ProximityLib.Double
         /// A flat triangle is the segment or point it is: never negative unless <paramref name="flatDepth"/> (a capsule's axis,
         /// whose crossing of a segment has a 2D depth), then the same axes measure that crossing.
         /// </summary>
-        private static double SegmentTriangle2(Vector3D p0, Vector3D p1, in TriFrame f, bool flatDepth, out double s, out Vector3D onSeg, out Vector3D onTri, out Vector3D dir)
+        private static double SegmentTriangle2(Vector3D p0, Vector3D p1, in TriFrame f, bool flatDepth, out double s, out Vector3D onSeg, out Vector3D onTri, out Vector3D dir) =>
+            SegmentTriangle2(p0, p1, f, Area2(f), flatDepth, out s, out onSeg, out onTri, out dir);
+
+        /// <summary>As above, with the triangle's orientation <paramref name="area"/> given (only whether it is 0 matters).</summary>
+        private static double SegmentTriangle2(Vector3D p0, Vector3D p1, in TriFrame f, double area, bool flatDepth, out double s, out Vector3D onSeg, out Vector3D onTri, out Vector3D dir)
         {
-            double area = Area2(f);
             double g = 0;
             s = 0; onSeg = p0; onTri = f.A;
             bool apart;
