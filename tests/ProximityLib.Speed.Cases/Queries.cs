@@ -18,6 +18,12 @@ namespace ProximitySpeed
     /// <summary>The touch-or-overlap verdict.</summary>
     public interface IOverlap<TA, TB> { bool Overlaps(in TA a, in TB b); }
 
+    /// <summary>
+    /// A ray cast: the distance T along the ray's unit direction to its first hit, +∞ for a miss (hit and T in one
+    /// number, so a baseline can be checked against the library pair by pair).
+    /// </summary>
+    public interface IRaycast<TRay, TShape> { double Cast(in TRay ray, in TShape shape); }
+
     /// <summary>Who wrote the code a case times.</summary>
     public enum Source { Library, Baseline, Paper }
 
@@ -111,6 +117,38 @@ namespace ProximitySpeed
             for (int r = 0; r < reps; r++)
                 for (int i = 0; i < a.Length; i++) if (q.Overlaps(a[i], b[i])) count++;
             return count;
+        }
+    }
+
+    internal sealed class RaycastLoop<TQ, TR, TS> where TQ : struct, IRaycast<TR, TS>
+    {
+        private readonly TR[] _a;
+        private readonly TS[] _b;
+        public RaycastLoop(TR[] a, TS[] b) { _a = a; _b = b; }
+
+        /// <summary>Sums T over the hits and counts the misses (−1 each): a missed hit or a wrong T moves the sum.</summary>
+        public double Run(int reps)
+        {
+            double acc = 0;
+            var a = _a;
+            var b = _b;
+            var q = default(TQ);
+            for (int r = 0; r < reps; r++)
+                for (int i = 0; i < a.Length; i++)
+                {
+                    double t = q.Cast(a[i], b[i]);
+                    acc += t <= double.MaxValue ? t : -1;
+                }
+            return acc;
+        }
+
+        /// <summary>Every pair's answer, for the pair-by-pair agreement check.</summary>
+        public double[] Each()
+        {
+            var result = new double[_a.Length];
+            var q = default(TQ);
+            for (int i = 0; i < _a.Length; i++) result[i] = q.Cast(_a[i], _b[i]);
+            return result;
         }
     }
 }

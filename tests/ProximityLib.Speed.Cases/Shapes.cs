@@ -10,8 +10,13 @@ namespace ProximitySpeed
     /// Builds the arrays a case reads from the input numbers (InputSet): the library's shapes in both precisions and the
     /// baselines' plain structs. Float shapes are the double numbers rounded to float, as a float user would hold them.
     /// </summary>
-    internal static class Shapes
+    internal static partial class Shapes
     {
+        static Shapes() { AddNew(Makers); }
+
+        /// <summary>The makers of issue 12's shapes (ShapesNew.cs); left out of builds against a library version without them.</summary>
+        static partial void AddNew(Dictionary<Type, Func<double[], object>> makers);
+
         private static readonly Dictionary<Type, Func<double[], object>> Makers = new Dictionary<Type, Func<double[], object>>
         {
             [typeof(D.Vector3D)] = v => V3(v, 0),
@@ -60,9 +65,9 @@ namespace ProximitySpeed
         /// <summary>The shapes of one side of a query's pairs.</summary>
         public static T[] Of<T>(double[][] numbers) => (T[])Of(typeof(T), numbers);
 
-        private static D.Vector3D V3(double[] v, int i) => new D.Vector3D(v[i], v[i + 1], v[i + 2]);
-        private static D.Vector2D V2(double[] v, int i) => new D.Vector2D(v[i], v[i + 1]);
-        private static Vector3 F3(double[] v, int i) => new Vector3((float)v[i], (float)v[i + 1], (float)v[i + 2]);
-        private static Vector2 F2(double[] v, int i) => new Vector2((float)v[i], (float)v[i + 1]);
+        internal static D.Vector3D V3(double[] v, int i) => new D.Vector3D(v[i], v[i + 1], v[i + 2]);
+        internal static D.Vector2D V2(double[] v, int i) => new D.Vector2D(v[i], v[i + 1]);
+        internal static Vector3 F3(double[] v, int i) => new Vector3((float)v[i], (float)v[i + 1], (float)v[i + 2]);
+        internal static Vector2 F2(double[] v, int i) => new Vector2((float)v[i], (float)v[i + 1]);
     }
 }

@@ -110,6 +110,9 @@ namespace ProximitySpeed
                 </Project>
                 """);
             var sources = CaseSources(false);
+            // Issue 12's cases need its shapes and ray casts: left out against a library without them (no RayHit.cs).
+            if (!File.Exists(Path.Combine(lib, "RayHit.cs")))
+                sources.RemoveAll(s => Path.GetFileName(s) is "PairsNew.cs" or "BaselinesNew.cs" or "Raycasts.cs" or "ShapesNew.cs");
             string casesProject = Path.Combine(work, "ProximityLib.Speed.CasesOld.csproj");
             void WriteCases() => File.WriteAllText(casesProject, $"""
                 <Project Sdk="Microsoft.NET.Sdk">
