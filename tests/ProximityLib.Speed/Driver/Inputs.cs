@@ -54,7 +54,6 @@ namespace ProximitySpeed
                     {
                         string a = AllKinds[i], b = AllKinds[j];
                         if (Kinds.Contains(a) && Kinds.Contains(b)) continue;
-                        if (b == "triangle" && (a == "line" || a == "ray")) continue;
                         yield return $"{dim}D {Name(a, dim)}–{Name(b, dim)}";
                     }
         }
