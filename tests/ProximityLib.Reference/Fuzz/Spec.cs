@@ -244,8 +244,8 @@ namespace ProximityReference.Fuzz
                 (Kind.Capsule, _) => new ProximityLib.Capsule2(fp2, fq2, (float)R),
                 (Kind.Triangle, 3) => new ProximityLib.Triangle3(fp, fq, fh),
                 (Kind.Triangle, _) => new ProximityLib.Triangle2(fp2, fq2, fh2),
-                (Kind.HalfSpace, 3) => ByOffset ? new ProximityLib.HalfSpace(fq, (float)R) : ProximityLib.HalfSpace.FromPointNormal(fp, fq),
-                (Kind.HalfSpace, _) => ByOffset ? new ProximityLib.HalfPlane(fq2, (float)R) : ProximityLib.HalfPlane.FromPointNormal(fp2, fq2),
+                (Kind.HalfSpace, 3) => ByOffset ? new ProximityLib.HalfSpace(fq, FloatOffset) : ProximityLib.HalfSpace.FromPointNormal(fp, fq),
+                (Kind.HalfSpace, _) => ByOffset ? new ProximityLib.HalfPlane(fq2, FloatOffset) : ProximityLib.HalfPlane.FromPointNormal(fp2, fq2),
                 _ => Form switch
                 {
                     ObbForm.Quaternion => new ProximityLib.Obb3(fp, new Quaternion((float)Rot[0], (float)Rot[1], (float)Rot[2], (float)Rot[3]), fh),
@@ -275,6 +275,9 @@ namespace ProximityReference.Fuzz
 
         private string L(double x) => Literal(x, Float);
 
+        /// <summary>The offset as the float API takes it: rounded to float, a value past float's range clamped to its largest (a generated n·p can overflow).</summary>
+        private float FloatOffset => (float)Math.Max(-float.MaxValue, Math.Min(float.MaxValue, R));
+
         private string Vec(Vector3D v) => Dim == 3
             ? $"new {(Float ? "Vector3" : "Vector3D")}({L(v.X)}, {L(v.Y)}, {L(v.Z)})"
             : $"new {(Float ? "Vector2" : "Vector2D")}({L(v.X)}, {L(v.Y)})";
@@ -293,7 +296,7 @@ namespace ProximityReference.Fuzz
                 Kind.Ray => $"new Ray{d}({Vec(P)}, {Vec(Q)})",
                 Kind.Capsule => $"new Capsule{d}({Vec(P)}, {Vec(Q)}, {L(R)})",
                 Kind.Triangle => $"new Triangle{d}({Vec(P)}, {Vec(Q)}, {Vec(H)})",
-                Kind.HalfSpace when ByOffset => $"new {(Dim == 3 ? "HalfSpace" : "HalfPlane")}({Vec(Q)}, {L(R)})",
+                Kind.HalfSpace when ByOffset => $"new {(Dim == 3 ? "HalfSpace" : "HalfPlane")}({Vec(Q)}, {L(Float ? FloatOffset : R)})",
                 Kind.HalfSpace => $"{(Dim == 3 ? "HalfSpace" : "HalfPlane")}.FromPointNormal({Vec(P)}, {Vec(Q)})",
                 _ => Form switch
                 {

@@ -58,14 +58,18 @@ namespace ProximityTests.Fuzz
         }
 
         /// <summary>
-        /// Cases the new-pair fuzz found (seeds 5 and 6, 64,000 cases each), each a defect fixed with it: half-space pairs with nearly
+        /// Cases the new-pair fuzz found (seeds 5, 6, 7 and 11), each a defect fixed with it: half-space pairs with nearly
         /// parallel normals whose common point missed both boundaries (the 2×2 system's determinant cancelled; float up to
         /// 137 units off) and a −0 distance in one argument order; linear–capsule and point-like–linear pairs whose axes
         /// meet at rounding level, pushed along a residual that was noise (along the line itself: the push-out did not
         /// clear); a capsule whose axis touches a box pushed along a face normal that led the axis back in; a meeting-axes
         /// normal from a cross product that overflowed or underflowed (2^k scaling: NaN witnesses at 2^-402); triangle
         /// crossings rounded at their world position (translation by 5e19 turned a 3e-8 gap into 0); a line whose origin
-        /// lies far along it, where |p − o|² overflowed in the test for a residual at rounding level.
+        /// lies far along it, where |p − o|² overflowed in the test for a residual at rounding level; a 2D line crossing a
+        /// stadium's axis at right angles, whose depth axis (the axis's direction, the line's normal) was taken for one
+        /// along which the line is unbounded (infinite witnesses); a line or ray exactly parallel to a boundary whose
+        /// rounded dot product was not 0 (−∞ for a finite distance: the sign is now exact); a line whose origin lies in a
+        /// half-plane but whose crossing lies past float's range (now the origin is the common point).
         /// </summary>
         [TestCase(5, 1000000006117, TestName = "HalfSpaces nearly opposite, both outside")]
         [TestCase(5, 1000000010997, TestName = "HalfSpaces nearly opposite, float")]
@@ -84,6 +88,10 @@ namespace ProximityTests.Fuzz
         [TestCase(5, 1000000033153, TestName = "Nearly parallel triangles translated by 5e19")]
         [TestCase(5, 1000000033300, TestName = "Ray far along to a capsule, scaled 2^793")]
         [TestCase(6, 1000000020972, TestName = "Line far along past a sphere, scaled 2^471")]
+        [TestCase(7, 1000000022053, TestName = "Line perpendicular to a stadium's axis, crossing it")]
+        [TestCase(11, 1000000023775, TestName = "Line exactly parallel to a half-space, rounded dot not 0")]
+        [TestCase(11, 1000000011862, TestName = "Ray exactly parallel to a half-space, rounded dot below 0")]
+        [TestCase(11, 1000000007335, TestName = "Line inside a half-plane, crossing past float's range")]
         public void CasesTheNewPairFuzzFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = Checker.Run(FuzzCase.Create(seed, index), exact: true);

@@ -102,9 +102,9 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// A line (origin o, unit direction u; a ray when <paramref name="ray"/>) against the half-space. Not parallel to
-        /// the boundary (a line), or heading inward (a ray): the penetration is unbounded, −∞, and both witnesses are the
-        /// crossing point o + t·u, t = −n·(o − p)/n·u (a ray that starts inside: its origin); should the crossing lie beyond
-        /// the double range, the origin. Otherwise the minimum is at every point of a line (parallel) or at a ray's origin,
+        /// the boundary (a line), or heading inward (a ray), by the exact sign of n·u (<see cref="DotSign"/>): the
+        /// penetration is unbounded, −∞, and both witnesses are the origin when it lies inside, else the crossing point
+        /// o + t·u, t = −n·(o − p)/n·u; should the crossing lie beyond the double range, the origin. Otherwise the minimum is at every point of a line (parallel) or at a ray's origin,
         /// which is returned with its foot on the boundary.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -113,10 +113,11 @@ namespace ProximityLib.Double
             var d = o - p;
             double s = Vector3D.Dot(n, d), k = Vector3D.Dot(n, u);
             inRange = Range.Box(Range.MaxAbs(d));
-            if (ray ? k < 0 : k != 0)
+            int sk = DotSign(n, u, k);
+            if (ray ? sk < 0 : sk != 0)
             {
                 double t = 0;
-                if (!ray || s > 0)
+                if (s > 0)
                 {
                     t = -s / k + 0.0; // + 0.0: a crossing at the origin is t = +0 whatever the signs
                     var x = o + u * t;
@@ -134,9 +135,10 @@ namespace ProximityLib.Double
         public static double LineHalfSpaceDistance(Vector3D o, Vector3D u, bool ray, Vector3D n, Vector3D p, out bool inRange)
         {
             var d = o - p;
-            double s = Vector3D.Dot(n, d), k = Vector3D.Dot(n, u);
+            double s = Vector3D.Dot(n, d);
             inRange = Range.Box(Range.MaxAbs(d));
-            if (ray ? k < 0 : k != 0) return double.NegativeInfinity;
+            int sk = DotSign(n, u, Vector3D.Dot(n, u));
+            if (ray ? sk < 0 : sk != 0) return double.NegativeInfinity;
             inRange &= s <= 0 | Range.In(s * s);
             return s;
         }
@@ -146,9 +148,35 @@ namespace ProximityLib.Double
         public static bool LineHalfSpaceOverlaps(Vector3D o, Vector3D u, bool ray, Vector3D n, Vector3D p, out bool inRange)
         {
             var d = o - p;
-            double k = Vector3D.Dot(n, u);
+            int sk = DotSign(n, u, Vector3D.Dot(n, u));
             inRange = Range.Box(Range.MaxAbs(d));
-            return (ray ? k < 0 : k != 0) || Vector3D.Dot(n, d) <= 0;
+            return (ray ? sk < 0 : sk != 0) || Vector3D.Dot(n, d) <= 0;
+        }
+
+        /// <summary>
+        /// The exact sign of a·b, given its rounded value <paramref name="dot"/>: that value's sign when it clears the
+        /// rounding bound 8u·Σ|aᵢbᵢ|, else the sign of the exact sum of the three products (each split exactly in two,
+        /// Dekker; summed without error, Shewchuk). Why: whether a line is parallel to a boundary decides between a
+        /// finite distance and −∞, and a rounded dot product of exactly perpendicular vectors is rarely exactly 0.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static int DotSign(Vector3D a, Vector3D b, double dot)
+        {
+            double bound = (Math.Abs(a.X * b.X) + Math.Abs(a.Y * b.Y) + Math.Abs(a.Z * b.Z)) * 8.881784197001252e-16;
+            return Math.Abs(dot) > bound ? Math.Sign(dot) : ExactDotSign(a, b);
+        }
+
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static int ExactDotSign(Vector3D a, Vector3D b)
+        {
+            Span<double> e = stackalloc double[12];
+            int m = 0;
+            AddProduct(e, ref m, a.X, b.X);
+            AddProduct(e, ref m, a.Y, b.Y);
+            AddProduct(e, ref m, a.Z, b.Z);
+            for (int i = m - 1; i >= 0; i--)
+                if (e[i] != 0) return Math.Sign(e[i]);
+            return 0;
         }
 
         /// <summary>

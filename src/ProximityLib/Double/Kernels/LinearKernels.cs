@@ -282,8 +282,8 @@ namespace ProximityLib.Double
         /// normal to the directions; the along-axes only tighten it where the difference is a thin sliver). Negative
         /// exactly when the origin is inside A − B, and then −(its depth), the distance to the nearest face: the 2D
         /// crossing depth. <paramref name="axis"/> is the unit axis of the largest gap, oriented with A on its + side
-        /// (zero when no direction is non-zero; the result is then +∞); <paramref name="aFlat"/> when it is A's own normal
-        /// (A's extent along it is one value). Extents are measured from A's start, so a common translation costs
+        /// (zero when no direction is non-zero; the result is then +∞); <paramref name="aFlat"/> when A's extent along it
+        /// is one value (its own normal, or B's direction when that is perpendicular to A). Extents are measured from A's start, so a common translation costs
         /// nothing. Ties go to the earlier axis.
         /// </summary>
         public static double Separation2(in Linear a, in Linear b, out Vector3D axis, out bool aFlat)
@@ -300,28 +300,31 @@ namespace ProximityLib.Double
             // one value, even for a line); the gaps are divided by the length afterwards.
             if (la > 0)
             {
-                Gap(new Vector3D(-da.Y, da.X, 0), la, a, b, w, ref g, ref axis, ref first);
-                aFlat = true;
-                if (Gap(new Vector3D(da.X, da.Y, 0), la, a, b, w, ref g, ref axis, ref first)) aFlat = false;
+                Gap(new Vector3D(-da.Y, da.X, 0), la, a, b, w, ref g, ref axis, ref first, ref aFlat);
+                Gap(new Vector3D(da.X, da.Y, 0), la, a, b, w, ref g, ref axis, ref first, ref aFlat);
             }
             if (lb > 0)
             {
-                if (Gap(new Vector3D(-db.Y, db.X, 0), lb, a, b, w, ref g, ref axis, ref first)) aFlat = false;
-                if (Gap(new Vector3D(db.X, db.Y, 0), lb, a, b, w, ref g, ref axis, ref first)) aFlat = false;
+                Gap(new Vector3D(-db.Y, db.X, 0), lb, a, b, w, ref g, ref axis, ref first, ref aFlat);
+                Gap(new Vector3D(db.X, db.Y, 0), lb, a, b, w, ref g, ref axis, ref first, ref aFlat);
             }
             return g;
         }
 
-        /// <summary>Takes the axis e/len when either orientation's gap beats g (ties to the earlier); true when it did.</summary>
-        private static bool Gap(Vector3D e, double len, in Linear a, in Linear b, Vector3D w, ref double g, ref Vector3D axis, ref bool first)
+        /// <summary>
+        /// Takes the axis e/len when either orientation's gap beats g (ties to the earlier), noting whether A's extent
+        /// along it is one value (its direction's component exactly 0). Why per axis and not per family: B's direction
+        /// can be A's normal itself (a line perpendicular to B), and rounding then decides which of the two equal gaps
+        /// wins; A is flat along either.
+        /// </summary>
+        private static void Gap(Vector3D e, double len, in Linear a, in Linear b, Vector3D w, ref double g, ref Vector3D axis, ref bool first, ref bool aFlat)
         {
-            bool took = false;
-            Extent(0, Vector3D.Dot(a.Dir, e), a.Lo, a.Hi, out double loA, out double hiA);
+            double kA = Vector3D.Dot(a.Dir, e);
+            Extent(0, kA, a.Lo, a.Hi, out double loA, out double hiA);
             Extent(Vector3D.Dot(w, e), Vector3D.Dot(b.Dir, e), b.Lo, b.Hi, out double loB, out double hiB);
             double up = (loA - hiB) / len, down = (loB - hiA) / len;
-            if (first || up > g) { g = up; axis = e / len; first = false; took = true; }
-            if (down > g) { g = down; axis = -e / len; took = true; }
-            return took;
+            if (first || up > g) { g = up; axis = e / len; first = false; aFlat = kA == 0; }
+            if (down > g) { g = down; axis = -e / len; aFlat = kA == 0; }
         }
 
         /// <summary>The extent c + [lo, hi]·k of a component along an axis (k its direction's component; ±∞ for unbounded ends).</summary>
