@@ -104,7 +104,7 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// A line (origin o, unit direction u; a ray when <paramref name="ray"/>) against the half-space. Not parallel to
-        /// the boundary (a line), or heading inward (a ray), by the exact sign of n·u (<see cref="DotSign"/>): the
+        /// the boundary (a line), or heading inward (a ray), by the exact sign of n·u (<see cref="AccurateDot"/>): the
         /// penetration is unbounded, −∞, and both witnesses are the origin when it lies inside, else the crossing point
         /// o + t·u, t = −n·(o − p)/n·u; should the crossing lie beyond the double range, the origin. Otherwise the minimum is at every point of a line (parallel) or at a ray's origin,
         /// which is returned with its foot on the boundary.
@@ -113,10 +113,9 @@ namespace ProximityLib.Double
         public static DistanceResult3 LineHalfSpace(Vector3D o, Vector3D u, bool ray, Vector3D n, Vector3D p, out bool inRange)
         {
             var d = o - p;
-            double s = Vector3D.Dot(n, d), k = Vector3D.Dot(n, u);
+            double s = Vector3D.Dot(n, d), k = AccurateDot(n, u, Vector3D.Dot(n, u));
             inRange = Range.Box(Range.MaxAbs(d));
-            int sk = DotSign(n, u, k);
-            if (ray ? sk < 0 : sk != 0)
+            if (ray ? k < 0 : k != 0)
             {
                 double t = 0;
                 if (s > 0)
@@ -139,8 +138,8 @@ namespace ProximityLib.Double
             var d = o - p;
             double s = Vector3D.Dot(n, d);
             inRange = Range.Box(Range.MaxAbs(d));
-            int sk = DotSign(n, u, Vector3D.Dot(n, u));
-            if (ray ? sk < 0 : sk != 0) return double.NegativeInfinity;
+            double k = AccurateDot(n, u, Vector3D.Dot(n, u));
+            if (ray ? k < 0 : k != 0) return double.NegativeInfinity;
             inRange &= s <= 0 | Range.In(s * s);
             return s;
         }
@@ -150,35 +149,38 @@ namespace ProximityLib.Double
         public static bool LineHalfSpaceOverlaps(Vector3D o, Vector3D u, bool ray, Vector3D n, Vector3D p, out bool inRange)
         {
             var d = o - p;
-            int sk = DotSign(n, u, Vector3D.Dot(n, u));
+            double k = AccurateDot(n, u, Vector3D.Dot(n, u));
             inRange = Range.Box(Range.MaxAbs(d));
-            return (ray ? sk < 0 : sk != 0) || Vector3D.Dot(n, d) <= 0;
+            return (ray ? k < 0 : k != 0) || Vector3D.Dot(n, d) <= 0;
         }
 
         /// <summary>
-        /// The exact sign of a·b, given its rounded value <paramref name="dot"/>: that value's sign when it clears the
-        /// rounding bound 8u·Σ|aᵢbᵢ|, else the sign of the exact sum of the three products (each split exactly in two,
-        /// Dekker; summed without error, Shewchuk). Why: whether a line is parallel to a boundary decides between a
-        /// finite distance and −∞, and a rounded dot product of exactly perpendicular vectors is rarely exactly 0.
+        /// a·b with its exact sign (0 exactly when a ⊥ b): the rounded <paramref name="dot"/> when it clears its rounding
+        /// bound 8u·Σ|aᵢbᵢ|, else the exact sum of the three products (each split exactly in two, Dekker; summed without
+        /// error, Shewchuk), rounded once. Why: whether a line is parallel to a boundary decides between a finite
+        /// distance and −∞, a rounded dot product of exactly perpendicular vectors is rarely exactly 0, and a nearly
+        /// parallel line's crossing t = −s/(n·u) needs n·u to more than its sign.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static int DotSign(Vector3D a, Vector3D b, double dot)
+        private static double AccurateDot(Vector3D a, Vector3D b, double dot)
         {
             double bound = (Math.Abs(a.X * b.X) + Math.Abs(a.Y * b.Y) + Math.Abs(a.Z * b.Z)) * 8.881784197001252e-16;
-            return Math.Abs(dot) > bound ? Math.Sign(dot) : ExactDotSign(a, b);
+            return Math.Abs(dot) > bound ? dot : ExactDot(a, b);
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static int ExactDotSign(Vector3D a, Vector3D b)
+        private static double ExactDot(Vector3D a, Vector3D b)
         {
             Span<double> e = stackalloc double[12];
             int m = 0;
             AddProduct(e, ref m, a.X, b.X);
             AddProduct(e, ref m, a.Y, b.Y);
             AddProduct(e, ref m, a.Z, b.Z);
-            for (int i = m - 1; i >= 0; i--)
-                if (e[i] != 0) return Math.Sign(e[i]);
-            return 0;
+            // The components are non-overlapping and increasing: summed from the smallest, the result is the exact
+            // value rounded (to within an ulp) and has its sign; no components, an exact 0.
+            double sum = 0;
+            for (int i = 0; i < m; i++) sum += e[i];
+            return sum;
         }
 
         /// <summary>
