@@ -596,6 +596,9 @@ namespace ProximityMonoCheck
             var k3 = new[] { new F.Capsule3(Vector3.Zero, Vector3.UnitX, 0.5f), new F.Capsule3(Far3, Far3 + Vector3.UnitY, 1) };
             var t3 = new[] { new F.Triangle3(new Vector3(0, -1, -1), new Vector3(0, 1, -1), new Vector3(0, 0, 2)), new F.Triangle3(Far3 - Vector3.UnitX, Far3 + Vector3.UnitX, Far3 + Vector3.UnitY) };
             var h3 = new[] { F.HalfSpace.FromPointNormal(Vector3.Zero, new Vector3(-1, 0, 0)), F.HalfSpace.FromPointNormal(Far3, Vector3.UnitZ) };
+            // 3D lines and rays as targets: one crossing the first ray's path (x = 1), one along the third ray, one far off.
+            var l3 = new[] { new F.Line3(new Vector3(1, 0.25f, -1), Vector3.UnitZ), new F.Line3(Far3, Vector3.UnitZ), new F.Line3(new Vector3(0, 9, 9), Vector3.UnitX) };
+            var y3 = new[] { new F.Ray3(new Vector3(1, 0.25f, -1), Vector3.UnitZ), new F.Ray3(Far3 + new Vector3(0, 0, 1), Vector3.UnitZ), new F.Ray3(new Vector3(1, 0.25f, 1), Vector3.UnitZ) };
             var l2 = new[] { new F.Line2(Vector2.Zero, Vector2.UnitY), new F.Line2(Far2, Vector2.UnitX) };
             var y2 = new[] { new F.Ray2(new Vector2(1, -1), Vector2.UnitY), new F.Ray2(Far2 + Vector2.UnitX, -Vector2.UnitX) };
             var k2 = new[] { new F.Capsule2(Vector2.Zero, Vector2.UnitX, 0.5f), new F.Capsule2(Far2, Far2 + Vector2.UnitY, 1) };
@@ -609,6 +612,8 @@ namespace ProximityMonoCheck
             Casts<F.Ray3, F.HalfSpace, float, F.RayHit3>(F.Raycast.Cast, r3, h3, float.PositiveInfinity);
             Casts<F.Ray3, F.Aabb3, float, F.RayHit3>(F.Raycast.Cast, r3, A3, 3);
             Casts<F.Ray3, F.Obb3, float, F.RayHit3>(F.Raycast.Cast, r3, B3, float.PositiveInfinity);
+            Casts<F.Ray3, F.Line3, float, F.RayHit3>(F.Raycast.Cast, r3, l3, float.PositiveInfinity);
+            Casts<F.Ray3, F.Ray3, float, F.RayHit3>(F.Raycast.Cast, r3, y3, float.PositiveInfinity);
             Casts<F.Ray2, Vector2, float, F.RayHit2>(F.Raycast.Cast, r2, P2, float.PositiveInfinity);
             Casts<F.Ray2, F.Segment2, float, F.RayHit2>(F.Raycast.Cast, r2, G2, float.PositiveInfinity);
             Casts<F.Ray2, F.Line2, float, F.RayHit2>(F.Raycast.Cast, r2, l2, float.PositiveInfinity);
@@ -630,6 +635,8 @@ namespace ProximityMonoCheck
             Casts<D.Ray3, D.HalfSpace, double, D.RayHit3>(D.Raycast.Cast, dr3, Array.ConvertAll(h3, x => (D.HalfSpace)x), double.PositiveInfinity);
             Casts<D.Ray3, D.Aabb3, double, D.RayHit3>(D.Raycast.Cast, dr3, Array.ConvertAll(A3, x => (D.Aabb3)x), 3);
             Casts<D.Ray3, D.Obb3, double, D.RayHit3>(D.Raycast.Cast, dr3, Array.ConvertAll(B3, x => (D.Obb3)x), double.PositiveInfinity);
+            Casts<D.Ray3, D.Line3, double, D.RayHit3>(D.Raycast.Cast, dr3, Array.ConvertAll(l3, x => (D.Line3)x), double.PositiveInfinity);
+            Casts<D.Ray3, D.Ray3, double, D.RayHit3>(D.Raycast.Cast, dr3, Array.ConvertAll(y3, x => (D.Ray3)x), double.PositiveInfinity);
             Casts<D.Ray2, D.Vector2D, double, D.RayHit2>(D.Raycast.Cast, dr2, Array.ConvertAll(P2, x => (D.Vector2D)x), double.PositiveInfinity);
             Casts<D.Ray2, D.Segment2, double, D.RayHit2>(D.Raycast.Cast, dr2, Array.ConvertAll(G2, x => (D.Segment2)x), double.PositiveInfinity);
             Casts<D.Ray2, D.Line2, double, D.RayHit2>(D.Raycast.Cast, dr2, Array.ConvertAll(l2, x => (D.Line2)x), double.PositiveInfinity);
