@@ -52,7 +52,10 @@ namespace ProximityReference.Fuzz
             ("parallel", Parallel, (a, b) => !Kinds.IsOriginal(a) || !Kinds.IsOriginal(b)),
             ("slivers", Slivers, (a, b) => a == Kind.Triangle || b == Kind.Triangle),
             ("far-along", FarAlong, (a, b) => Kinds.IsLinear(a) || Kinds.IsLinear(b)),
+            ("edge-parallel", EdgeParallel, (a, b) => (a == Kind.Triangle && Axial(b)) || (b == Kind.Triangle && Axial(a))),
         };
+
+        private static bool Axial(Kind k) => k == Kind.Segment || k == Kind.Line || k == Kind.Ray || k == Kind.Capsule;
 
         private static bool Edged(Kind k) => k == Kind.Segment || k == Kind.Aabb || k == Kind.Obb;
 
@@ -1145,6 +1148,45 @@ namespace ProximityReference.Fuzz
                 guest = RandomShape(r, other, dim, SurfacePoint(r, tri) + Dir(r, dim) * (small * r.Range(-1, 1)), small);
             }
             return Finish(triA ? tri : guest, triA ? guest : tri, p);
+        }
+
+        /// <summary>
+        /// A segment, line, ray or capsule axis along an edge of a triangle (general, needle, sliver or flat), turned by
+        /// 10^−3…10^−15, through the triangle or just off it (0 or 10^0…10^−16 of the size), shifted along itself: the
+        /// axis × edge directions of the depth are then nearly zero cross products (they were rounded by u/sinθ).
+        /// </summary>
+        private static (Spec, Spec) EdgeParallel(Rng r, Kind ka, Kind kb, int dim, Precision p)
+        {
+            double s = r.Pow2(-10, 10);
+            var a = U3(r, 1, dim) * s;
+            var b = a + Dir(r, dim) * (s * r.Range(0.5, 2));
+            var c = r.Int(4) switch
+            {
+                0 => a + (b - a) * r.Range(-0.5, 1.5) + Perp(r, (b - a) / (b - a).Length, dim) * (s * r.Pow10Neg(3, 15)), // sliver
+                1 => b + Dir(r, dim) * (s * r.Pow10Neg(3, 15)),                                                            // needle
+                2 => a + (b - a) * 0.25,                                                                                   // flat
+                _ => a + U3(r, 1, dim) * s,
+            };
+            var corners = new[] { a, b, c };
+            int i = r.Int(3);
+            var e = corners[(i + 1) % 3] - corners[i];
+            if (e.LengthSquared == 0) e = Dir(r, dim);
+            var d = Turn(e / e.Length, Perp(r, e / e.Length, dim), r.Pow10Neg(3, 15) * r.Sign());
+            double u = r.Unit(), v = r.Unit() * (1 - u);
+            var through = a + (b - a) * u + (c - a) * v;
+            if (!r.Chance(0.25)) through += Dir(r, dim) * (s * r.Pow10Neg(0, 16));
+            double len = s * r.Range(0.25, 2);
+            var start = through - d * (len * r.Range(-0.5, 1.5));
+            Kind other = ka == Kind.Triangle ? kb : ka;
+            var axial = other switch
+            {
+                Kind.Line => Spec.Line(dim, start, d),
+                Kind.Ray => Spec.Ray(dim, start, r.Chance(0.5) ? d : -d),
+                Kind.Capsule => Spec.Capsule(dim, start, start + d * len, r.Chance(0.25) ? 0 : s * r.Pow10Neg(0, 12)),
+                _ => Spec.Segment(dim, start, start + d * len),
+            };
+            var tri = Spec.Triangle(dim, a, b, c);
+            return Finish(ka == Kind.Triangle ? tri : axial, ka == Kind.Triangle ? axial : tri, p);
         }
 
         /// <summary>

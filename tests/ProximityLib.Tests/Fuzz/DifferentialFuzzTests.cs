@@ -58,7 +58,7 @@ namespace ProximityTests.Fuzz
         }
 
         /// <summary>
-        /// Cases the new-pair fuzz found (seeds 5, 6, 7, 11 and 12), each a defect fixed with it: half-space pairs with nearly
+        /// Cases the new-pair fuzz found (seeds 5, 6, 7, 11, 12 and 31), each a defect fixed with it: half-space pairs with nearly
         /// parallel normals whose common point missed both boundaries (the 2×2 system's determinant cancelled; float up to
         /// 137 units off) and a −0 distance in one argument order; linear–capsule and point-like–linear pairs whose axes
         /// meet at rounding level, pushed along a residual that was noise (along the line itself: the push-out did not
@@ -71,7 +71,9 @@ namespace ProximityTests.Fuzz
         /// rounded dot product was not 0 (−∞ for a finite distance: the sign is now exact); a line whose origin lies in a
         /// half-plane but whose crossing lies past float's range (now the origin is the common point); a line grazing a
         /// boundary whose rounded dot product was exactly 0 while the exact one was not (its crossing t = −s/(n·u) came
-        /// out infinite: n·u is now the exact value rounded).
+        /// out infinite: n·u is now the exact value rounded); a capsule whose axis crosses a triangle nearly parallel to an
+        /// edge (its axis × edge depth directions were rounded by u/sinθ: depth overstated); a sphere centred on a triangle's
+        /// doubled vertex, pushed perpendicular to the zero-length edge AB instead of to the segment the triangle is.
         /// </summary>
         [TestCase(5, 1000000006117, TestName = "HalfSpaces nearly opposite, both outside")]
         [TestCase(5, 1000000010997, TestName = "HalfSpaces nearly opposite, float")]
@@ -96,6 +98,8 @@ namespace ProximityTests.Fuzz
         [TestCase(11, 1000000007335, TestName = "Line inside a half-plane, crossing past float's range")]
         [TestCase(12, 1000000013655, TestName = "Line grazing a half-plane, rounded dot exactly 0")]
         [TestCase(12, 1000000013615, TestName = "Line grazing a half-space, rounded dot exactly 0")]
+        [TestCase(31, 1000000005629, TestName = "Capsule axis nearly parallel to a triangle's edge, crossing it")]
+        [TestCase(31, 1000000011386, TestName = "Sphere centred on a triangle's doubled vertex")]
         public void CasesTheNewPairFuzzFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = Checker.Run(FuzzCase.Create(seed, index), exact: true);

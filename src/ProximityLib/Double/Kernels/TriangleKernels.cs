@@ -112,7 +112,7 @@ namespace ProximityLib.Double
             f.Edge(edge, out var v0, out var v1);
             double len = Math.Sqrt(g);
             fine = Range.Length2(r, g);
-            var normal = len > 0 ? SegmentNormal(r, g, len, v0, v1, t, (v1 - v0).LengthSquared) : (f.Flat ? AnyPerpendicular(v1 - v0) : f.Unit);
+            var normal = len > 0 ? SegmentNormal(r, g, len, v0, v1, t, (v1 - v0).LengthSquared) : (f.Flat ? AnyPerpendicular(Longest(f)) : f.Unit);
             return new PointContact(len, g, SegmentPoint(v0, v1, t), normal, 0);
         }
 
@@ -173,7 +173,7 @@ namespace ProximityLib.Double
             {
                 return new PointContact(len > 0 ? -len : 0, 0, SegmentPoint(v0, v1, t), Outward2(v1 - v0, area), 0);
             }
-            var normal = len > 0 ? SegmentNormal(r, g, len, v0, v1, t, (v1 - v0).LengthSquared) : (area != 0 ? Outward2(v1 - v0, area) : AnyPerpendicular(v1 - v0));
+            var normal = len > 0 ? SegmentNormal(r, g, len, v0, v1, t, (v1 - v0).LengthSquared) : (area != 0 ? Outward2(v1 - v0, area) : AnyPerpendicular(Longest(f)));
             return new PointContact(len, g, SegmentPoint(v0, v1, t), normal, 0);
         }
 
