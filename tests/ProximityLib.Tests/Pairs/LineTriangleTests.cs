@@ -57,6 +57,11 @@ namespace ProximityTests.Pairs
                 Assert.That(p.ParameterA, Is.EqualTo(p.PointA.X + 3).Within(1e-15), p.ToString());
                 Assert.That(ProximityQuery.Overlaps(new Line3(V(-3, 1, h), V(1, 0, 0)), T), Is.False);
             }
+            // At 1e-300 the height is far below the configuration's rounding (u·S ≈ 4e-16 here): the answer may be 0 (the
+            // witness then lies 1e-300 off the plane); only the bound E·u·S holds.
+            var deep = ClosestDistance.Between(new Line3(V(-3, 1, 1e-300), V(1, 0, 0)), T);
+            Assert.That(deep.Distance, Is.InRange(0.0, 1e-300 + 4 * 4 * Math.Pow(2, -53)), deep.ToString());
+            Assert.That(deep.PointB.Z, Is.EqualTo(0).Within(1e-300), deep.ToString());
             // Parallel to edge BC beside it (the line x + y = 6 in the plane): √2, PointA − PointB = (1, 1, 0).
             var e = ClosestDistance.Between(new Line3(V(3, 3, 0), V(1, -1, 0)), T);
             Assert.That(e.Distance, Is.EqualTo(Math.Sqrt(2)).Within(1e-15));
@@ -90,7 +95,7 @@ namespace ProximityTests.Pairs
             Assert.That(p.ParameterA, Is.EqualTo(3));
             // 2D: a flat triangle is a segment, so a crossing is 0, not negative.
             var f2 = new Triangle2(V(0, 0), V(4, 0), V(2, 0));
-            Result(ClosestDistance.Between(new Line2(V(1, -1), V(0, 1)), f2), 0, V(1, 0), V(1, 0), 1e-14);
+            Result(ClosestDistance.Between(new Line2(V(1, -1), V(0, 1)), f2), 0, V(1, 0), V(1, 0), 1e-15);
             Assert.That(ProximityQuery.Overlaps(new Line2(V(1, -1), V(0, 1)), f2), Is.True);
             // Parallel to it: 1, over some point of it.
             var par = ClosestDistance.Between(new Line2(V(-5, 1), V(1, 0)), f2);
@@ -114,6 +119,7 @@ namespace ProximityTests.Pairs
             // x + y = 3.5, parallel to BC: B and C are 0.5/√2 above it, A 3.5/√2 below: pushed toward BC by √2/4.
             var h = ClosestDistance.Between(new Line2(V(0, 3.5), V(1, -1)), T2);
             Assert.That(h.Distance, Is.EqualTo(-Math.Sqrt(2) / 4).Within(1e-15));
+            // The push's witnesses within 32·u·S (S = 5): a 1e-14 tolerance.
             Near(new Vector3D(h.PointB.X - h.PointA.X, h.PointB.Y - h.PointA.Y, 0), V(0.25, 0.25, 0), 1e-14, "push " + h);
             // A needle-thin sliver crossed across its length: the depth is the shorter way off it, 1 (not 0).
             var sliver = new Triangle2(V(0, 0), V(4, 0), V(2, 1e-9));
@@ -126,8 +132,8 @@ namespace ProximityTests.Pairs
             Assert.That(ProximityQuery.Overlaps(new Line2(V(4, -1), V(0, 1)), T2), Is.True);
             // Apart: x + y = 6 is √2 from BC; x = 5 is 1 from B.
             var a = ClosestDistance.Between(new Line2(V(3, 3), V(1, -1)), T2);
-            Assert.That(a.Distance, Is.EqualTo(Math.Sqrt(2)).Within(1e-14));
-            Near(new Vector3D(a.PointA.X - a.PointB.X, a.PointA.Y - a.PointB.Y, 0), V(1, 1, 0), 1e-14, "offset " + a);
+            Assert.That(a.Distance, Is.EqualTo(Math.Sqrt(2)).Within(1e-14)); // measured 1.2e-15 off (E ≈ 2 at S = 5)
+            Near(new Vector3D(a.PointA.X - a.PointB.X, a.PointA.Y - a.PointB.Y, 0), V(1, 1, 0), 1e-14, "offset " + a); // 2.4e-15 measured
             var v = ClosestDistance.Between(new Line2(V(5, 7), V(0, -1)), T2);
             Result(v, 1, V(5, 0), V(4, 0));
             Assert.That(v.ParameterA, Is.EqualTo(7));

@@ -34,7 +34,7 @@ namespace ProximityTests.Pairs
             Assert.That(along.Distance, Is.EqualTo(0));
             Assert.That(along.PointA, Is.EqualTo(along.PointB));
             // In the plane beyond BC, heading away: the origin, 3√2 from (2, 2, 0).
-            Result(ClosestDistance.Between(new Ray3(V(5, 5, 0), V(1, 0, 0)), T), 3 * Math.Sqrt(2), V(5, 5, 0), V(2, 2, 0), 1e-14);
+            Result(ClosestDistance.Between(new Ray3(V(5, 5, 0), V(1, 0, 0)), T), 3 * Math.Sqrt(2), V(5, 5, 0), V(2, 2, 0), 1e-15);
             // Past vertex B (grazing) from below: touching at B.
             Result(ClosestDistance.Between(new Ray3(V(4, 0, -3), V(0, 0, 1)), T), 0, V(4, 0, 0), V(4, 0, 0));
             // Stopping short: the ray (1, 1, z ≥ −1) heading down misses; 1 from (1, 1, 0).
@@ -55,7 +55,7 @@ namespace ProximityTests.Pairs
             // (3.5/√2); pushed so, the ray touches BC at its origin (1.75, 2.25).
             var b = ClosestDistance.Between(new Ray2(V(1.5, 2), V(1, 1)), T2);
             Assert.That(b.Distance, Is.EqualTo(-Math.Sqrt(2) / 4).Within(1e-15));
-            Result(b, b.Distance, V(1.5, 2), V(1.75, 2.25), 1e-14);
+            Result(b, b.Distance, V(1.5, 2), V(1.75, 2.25), 1e-15);
             Assert.That(b.ParameterA, Is.EqualTo(0));
             // Entering from outside at height 1 (heading −x): sideways 1 (down).
             var e = ClosestDistance.Between(new Ray2(V(5, 1), V(-1, 0)), T2);
@@ -74,7 +74,7 @@ namespace ProximityTests.Pairs
             Assert.That(ProximityQuery.Overlaps(new Ray2(V(1, 5), V(0, 1)), T2), Is.False);
             // A flat triangle is the segment it is: a ray crossing it touches (0), never negative.
             var flat = new Triangle2(V(0, 0), V(4, 0), V(2, 0));
-            Result(ClosestDistance.Between(new Ray2(V(1, 3), V(0, -1)), flat), 0, V(1, 0), V(1, 0), 1e-14);
+            Result(ClosestDistance.Between(new Ray2(V(1, 3), V(0, -1)), flat), 0, V(1, 0), V(1, 0), 1e-15);
             Assert.That(ProximityQuery.Overlaps(new Ray2(V(1, 3), V(0, -1)), flat), Is.True);
             Assert.That(ProximityQuery.Overlaps(new Ray2(V(1, 3), V(0, 1)), flat), Is.False);
         }
