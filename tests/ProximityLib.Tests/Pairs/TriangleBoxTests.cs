@@ -34,6 +34,40 @@ namespace ProximityTests.Pairs
             Result(ClosestDistance.Between(T, box), 1, V(2, 2, 0), V(2, 2, 1), 1e-15);
         }
 
+        /// <summary>
+        /// Where the classic triangle–box separating-axis test (Akenine-Möller 2001) is fragile: a triangle lying in a face's
+        /// plane (the plane axis separates nothing; only the edge axes decide) and a degenerate triangle (its normal is zero,
+        /// so the plane axis proves nothing either way). Each case in both argument orders, AABB and the same box as an OBB,
+        /// against the exact reference.
+        /// </summary>
+        [Test]
+        public void FacePlaneAndDegenerateTriangles()
+        {
+            var box = new Aabb3(V(0, 0, 0), V(1, 1, 1));
+            var obb = Obb3.FromQuaternion(V(0.5, 0.5, 0.5), 0, 0, 0, 1, V(0.5, 0.5, 0.5));
+            var cases = new (Triangle3 T, bool Meet, string Name)[]
+            {
+                (new Triangle3(V(0.5, 0.5, 1), V(3, 0.5, 1), V(0.5, 3, 1)), true, "in the top face's plane, a corner on the face"),
+                (new Triangle3(V(1, 1, 1), V(3, 1, 1), V(1, 3, 1)), true, "in the top face's plane, touching at the box's corner"),
+                (new Triangle3(V(1.5, 1.5, 1), V(3, 1.5, 1), V(1.5, 3, 1)), false, "in the top face's plane, beside the face"),
+                (new Triangle3(V(3, -0.5, 1), V(-0.5, 3, 1), V(3, 3, 1)), false, "in the top face's plane, its edge 0.25·√2 past the corner"),
+                (new Triangle3(V(-1, 0.5, 0.5), V(2, 0.5, 0.5), V(0.5, 0.5, 0.5)), true, "collinear, through the box"),
+                (new Triangle3(V(-1, 1, 1), V(2, 1, 1), V(0, 1, 1)), true, "collinear, along the top edge"),
+                (new Triangle3(V(-1, 3.5, 1), V(3.5, -1, 1), V(0, 2.5, 1)), false, "collinear, missing the top corner by 0.25·√2"),
+                (new Triangle3(V(1.25, 1, 2), V(1.25, 1, 2), V(1.25, 1, 2)), false, "all three vertices one point off the box"),
+            };
+            foreach (var (t, meet, name) in cases)
+            {
+                foreach (object b in new object[] { box, obb })
+                {
+                    string at = $"{name}: {t} | {b}";
+                    Assert.That((bool)ProximityQuery.Overlaps(t, (dynamic)b), Is.EqualTo(meet), at);
+                    Assert.That((bool)ProximityQuery.Overlaps((dynamic)b, t), Is.EqualTo(meet), at);
+                    Assert.That(Check(t, b, ref at), Is.LessThanOrEqualTo(32), at);
+                }
+            }
+        }
+
         [Test]
         public void ScalingAndRandomFamilies()
         {
