@@ -73,7 +73,9 @@ namespace ProximityTests.Fuzz
         /// boundary whose rounded dot product was exactly 0 while the exact one was not (its crossing t = −s/(n·u) came
         /// out infinite: n·u is now the exact value rounded); a capsule whose axis crosses a triangle nearly parallel to an
         /// edge (its axis × edge depth directions were rounded by u/sinθ: depth overstated); a sphere centred on a triangle's
-        /// doubled vertex, pushed perpendicular to the zero-length edge AB instead of to the segment the triangle is.
+        /// doubled vertex, pushed perpendicular to the zero-length edge AB instead of to the segment the triangle is; a 2D
+        /// capsule axis touching a flat triangle (seed 41: an intermediate version took exact touching for apart and pushed
+        /// perpendicular to the axis).
         /// </summary>
         [TestCase(5, 1000000006117, TestName = "HalfSpaces nearly opposite, both outside")]
         [TestCase(5, 1000000010997, TestName = "HalfSpaces nearly opposite, float")]
@@ -100,6 +102,8 @@ namespace ProximityTests.Fuzz
         [TestCase(12, 1000000013615, TestName = "Line grazing a half-space, rounded dot exactly 0")]
         [TestCase(31, 1000000005629, TestName = "Capsule axis nearly parallel to a triangle's edge, crossing it")]
         [TestCase(31, 1000000011386, TestName = "Sphere centred on a triangle's doubled vertex")]
+        [TestCase(41, 1000000104629, TestName = "Stadium axis touching a doubled-vertex triangle, float")]
+        [TestCase(41, 1000000121829, TestName = "Stadium axis touching a doubled-vertex triangle")]
         public void CasesTheNewPairFuzzFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = Checker.Run(FuzzCase.Create(seed, index), exact: true);

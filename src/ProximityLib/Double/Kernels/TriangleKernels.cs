@@ -481,10 +481,11 @@ namespace ProximityLib.Double
             }
             else
             {
-                // Flat: the segment it is. Crossing it has a depth only for a capsule's axis, and only a proper crossing
-                // (exact signs: the rounded distance of two crossing segments is rounding noise, not 0).
+                // Flat: the segment it is. Meeting it has a depth (and a push direction from the axes below) only for a
+                // capsule's axis: touching (an exact 0) or properly crossing (exact signs: the rounded distance of two
+                // crossing segments is rounding noise, not 0).
                 g = EdgesDistance(p0, p1, f, out s, out onSeg, out onTri);
-                apart = !flatDepth || !CrossesFlat2(p0, p1, f);
+                apart = !flatDepth || (g > 0 && !CrossesFlat2(p0, p1, f));
             }
             if (apart)
             {
