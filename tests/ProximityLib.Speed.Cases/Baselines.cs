@@ -216,19 +216,25 @@ namespace ProximitySpeed
     {
         public double Distance(in SegmentF a, in SegmentF b)
         {
-            Vector3 d1 = a.Q - a.P, d2 = b.Q - b.P;
-            var r = a.P - b.P;
-            SegmentParameters.Of(Vector3.Dot(d1, d1), Vector3.Dot(d1, d2), Vector3.Dot(d2, d2), Vector3.Dot(d1, r), Vector3.Dot(d2, r), out float s, out float t);
-            return Vector3.Distance(a.P + d1 * s, b.P + d2 * t);
+            Closest(a, b, out var pa, out var pb);
+            return Vector3.Distance(pa, pb);
         }
 
         public double Between(in SegmentF a, in SegmentF b)
         {
+            Closest(a, b, out var pa, out var pb);
+            return Fold.Of(Vector3.Distance(pa, pb), pa, pb);
+        }
+
+        /// <summary>The closest points (shared with the capsule baselines).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static void Closest(in SegmentF a, in SegmentF b, out Vector3 pa, out Vector3 pb)
+        {
             Vector3 d1 = a.Q - a.P, d2 = b.Q - b.P;
             var r = a.P - b.P;
             SegmentParameters.Of(Vector3.Dot(d1, d1), Vector3.Dot(d1, d2), Vector3.Dot(d2, d2), Vector3.Dot(d1, r), Vector3.Dot(d2, r), out float s, out float t);
-            Vector3 pa = a.P + d1 * s, pb = b.P + d2 * t;
-            return Fold.Of(Vector3.Distance(pa, pb), pa, pb);
+            pa = a.P + d1 * s;
+            pb = b.P + d2 * t;
         }
     }
 
@@ -491,8 +497,9 @@ namespace ProximitySpeed
             return Fold.Of(Math.Sqrt(dx * dx + dy * dy + dz * dz), ax, ay, az, bx, by, bz);
         }
 
+        /// <summary>The closest points (shared with the capsule baselines).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void Closest(in SegmentD a, in SegmentD b, out double ax, out double ay, out double az, out double bx, out double by, out double bz)
+        internal static void Closest(in SegmentD a, in SegmentD b, out double ax, out double ay, out double az, out double bx, out double by, out double bz)
         {
             double d1x = a.QX - a.PX, d1y = a.QY - a.PY, d1z = a.QZ - a.PZ;
             double d2x = b.QX - b.PX, d2y = b.QY - b.PY, d2z = b.QZ - b.PZ;

@@ -21,7 +21,7 @@ namespace ProximitySpeed
 
         public double Between(in CapsuleF a, in CapsuleF b)
         {
-            Closest(a.S, b.S, out var pa, out var pb);
+            SegmentSegmentF.Closest(a.S, b.S, out var pa, out var pb);
             var d = pb - pa;
             float length = d.Length();
             var n = length > 0 ? d / length : Vector3.UnitX;
@@ -30,19 +30,9 @@ namespace ProximitySpeed
 
         public bool Overlaps(in CapsuleF a, in CapsuleF b)
         {
-            Closest(a.S, b.S, out var pa, out var pb);
+            SegmentSegmentF.Closest(a.S, b.S, out var pa, out var pb);
             float r = a.R + b.R;
             return Vector3.DistanceSquared(pa, pb) <= r * r;
-        }
-
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void Closest(in SegmentF a, in SegmentF b, out Vector3 pa, out Vector3 pb)
-        {
-            Vector3 d1 = a.Q - a.P, d2 = b.Q - b.P;
-            var r = a.P - b.P;
-            SegmentParameters.Of(Vector3.Dot(d1, d1), Vector3.Dot(d1, d2), Vector3.Dot(d2, d2), Vector3.Dot(d1, r), Vector3.Dot(d2, r), out float s, out float t);
-            pa = a.P + d1 * s;
-            pb = b.P + d2 * t;
         }
     }
 
@@ -161,7 +151,7 @@ namespace ProximitySpeed
 
         public double Between(in CapsuleD a, in CapsuleD b)
         {
-            Closest(a.S, b.S, out double ax, out double ay, out double az, out double bx, out double by, out double bz);
+            SegmentSegmentD.Closest(a.S, b.S, out double ax, out double ay, out double az, out double bx, out double by, out double bz);
             double dx = bx - ax, dy = by - ay, dz = bz - az;
             double length = Math.Sqrt(dx * dx + dy * dy + dz * dz);
             double nx = 1, ny = 0, nz = 0;
@@ -171,21 +161,9 @@ namespace ProximitySpeed
 
         public bool Overlaps(in CapsuleD a, in CapsuleD b)
         {
-            Closest(a.S, b.S, out double ax, out double ay, out double az, out double bx, out double by, out double bz);
+            SegmentSegmentD.Closest(a.S, b.S, out double ax, out double ay, out double az, out double bx, out double by, out double bz);
             double dx = bx - ax, dy = by - ay, dz = bz - az, r = a.R + b.R;
             return dx * dx + dy * dy + dz * dz <= r * r;
-        }
-
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void Closest(in SegmentD a, in SegmentD b, out double ax, out double ay, out double az, out double bx, out double by, out double bz)
-        {
-            double d1x = a.QX - a.PX, d1y = a.QY - a.PY, d1z = a.QZ - a.PZ;
-            double d2x = b.QX - b.PX, d2y = b.QY - b.PY, d2z = b.QZ - b.PZ;
-            double rx = a.PX - b.PX, ry = a.PY - b.PY, rz = a.PZ - b.PZ;
-            SegmentParameters.Of(d1x * d1x + d1y * d1y + d1z * d1z, d1x * d2x + d1y * d2y + d1z * d2z, d2x * d2x + d2y * d2y + d2z * d2z,
-                d1x * rx + d1y * ry + d1z * rz, d2x * rx + d2y * ry + d2z * rz, out double s, out double t);
-            ax = a.PX + d1x * s; ay = a.PY + d1y * s; az = a.PZ + d1z * s;
-            bx = b.PX + d2x * t; by = b.PY + d2y * t; bz = b.PZ + d2z * t;
         }
     }
 
