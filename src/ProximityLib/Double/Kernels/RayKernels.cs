@@ -22,14 +22,19 @@ namespace ProximityLib.Double
             var w = o - center;
             inRange = Range.Box(Math.Max(Range.MaxAbs(w), r));
             double wl = w.Length;
-            if (wl <= r) return wl < r ? RayHit3.Inside(o) : new RayHit3(0, o, Unit(w, -d), false);
+            // On the surface; a zero radius (w zero, or so small its length underflows) has only −Direction (docs).
+            if (wl <= r) return wl < r ? RayHit3.Inside(o) : new RayHit3(0, o, r == 0 ? -d : Unit(w, -d), false);
             double b = Vector3D.Dot(w, d);
             if (!(b < 0)) return RayHit3.Miss; // outside and not approaching the center: never enters a ball
-            double h = (w - d * b).Length;
+            var across = w - d * b; // the centre's offset across the ray, length h
+            double h = across.Length;
             if (!(h <= r)) return RayHit3.Miss;
             double t = (wl - r) * (wl + r) / (Math.Sqrt((r - h) * (r + h)) - b);
-            // The point from the center and the normal: on the surface to rounding at the sphere's scale, however far the origin.
-            var n = Unit(w + d * t, -d);
+            // The hit's offset from the centre, w + d·t = across + d·(b + t): its part along the ray is −half-chord at an
+            // entry, so a positive b + t is rounding (all there is at a zero radius) and is clamped to 0: the normal never
+            // points along the ray, and every term scales by 2^k exactly. The point from the centre is on the surface to
+            // rounding at the sphere's scale, however far the origin.
+            var n = Unit(across + d * Math.Min(b + t, 0), -d);
             return new RayHit3(t, center + n * r, n, false);
         }
 
@@ -45,7 +50,7 @@ namespace ProximityLib.Double
             inRange = Range.Box(Math.Max(Math.Max(Range.MaxAbs(w), Range.MaxAbs(e)), r));
             var res = PointSegmentResidual(o, a, b, out _, out double ee);
             double rl = res.Length;
-            if (rl <= r) return rl < r ? RayHit3.Inside(o) : new RayHit3(0, o, Unit(res, -d), false);
+            if (rl <= r) return rl < r ? RayHit3.Inside(o) : new RayHit3(0, o, r == 0 ? -d : Unit(res, -d), false);
             var best = RaySphere(o, d, a, r, out _);
             var other = RaySphere(o, d, b, r, out _);
             if (other.T < best.T) best = other;
@@ -58,17 +63,28 @@ namespace ProximityLib.Double
                 double aa = dn.LengthSquared, bq = Vector3D.Dot(wn, dn), wl = wn.Length;
                 if (aa > 0 && bq < 0 && wl > r)
                 {
-                    double h = (wn - dn * (bq / aa)).Length;
+                    double q = bq / aa;
+                    var across = wn - dn * q;
+                    double h = across.Length;
                     if (h <= r)
                     {
                         double t = (wl - r) * (wl + r) / (Math.Sqrt(aa) * Math.Sqrt((r - h) * (r + h)) - bq);
                         double u = wp + dp * t;
                         if (u >= 0 && u <= 1 && t < best.T)
                         {
-                            var n = Unit(wn + dn * t, -d);
+                            // As for the ball, in the plane across the axis: wn + dn·t = across + dn·(q + t), q + t ≤ 0.
+                            var n = Unit(across + dn * Math.Min(q + t, 0), -d);
                             best = new RayHit3(t, SegmentPoint(a, b, u) + n * r, n, false);
                         }
                     }
+                }
+                if (r == 0 && best.Hit)
+                {
+                    // A zero radius is the segment: any normal across it is outward at an interior point, so take the one
+                    // facing the ray (in the outward cone at an end too). A ray along the axis that meets an end exactly
+                    // runs along the segment: an origin between the ends is on it (its residual was rounding).
+                    if (aa > 0) best = new RayHit3(best.T, best.Point, Unit(-dn, -d), false);
+                    else if (wp >= 0 && wp <= 1) best = new RayHit3(0, o, -d, false);
                 }
             }
             return best;
