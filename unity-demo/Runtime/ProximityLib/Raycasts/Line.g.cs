@@ -17,7 +17,7 @@ namespace ProximityLib.Double
             var hit = Core(ray, shape, out bool inRange);
             return RayHit3.Within(inRange ? hit : Slow(ray, shape), maxDistance);
         }
-        /// <summary>First hit of a ray on a line (2D): the line is a wall the ray crosses; Normal is its normal on the side the ray comes from; a ray on the line hits at T = 0 with Normal −Direction, a parallel one misses. Algorithm: T = ((line.Origin − Origin) × e) / (Direction × e). A hit farther than maxDistance is a miss; a negative or NaN maxDistance throws System.ArgumentException.</summary>
+        /// <summary>First hit of a ray on a line (2D): the line is a wall the ray crosses; Normal is its normal on the side the ray comes from; a ray on the line hits at T = 0 with Normal −Direction, a parallel one misses. Algorithm: the crossing s = −(Direction × (line.Origin − Origin)) / (Direction × e) on the line, T = Direction·(line.Origin + s·e − Origin). A hit farther than maxDistance is a miss; a negative or NaN maxDistance throws System.ArgumentException.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static RayHit2 Cast(Ray2 ray, Line2 shape, double maxDistance = double.PositiveInfinity)
         {

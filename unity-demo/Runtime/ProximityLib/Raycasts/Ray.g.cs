@@ -17,7 +17,7 @@ namespace ProximityLib.Double
             var hit = Core(ray, shape, out bool inRange);
             return RayHit3.Within(inRange ? hit : Slow(ray, shape), maxDistance);
         }
-        /// <summary>First hit of a ray on a ray (2D): the target ray is a wall the ray crosses (its origin included); Normal is its normal on the side the ray comes from; a ray running along the target hits at T = 0 when its origin lies on the target, else at the target's origin when that lies ahead, with Normal −Direction. Algorithm: T = ((target.Origin − Origin) × e) / (Direction × e), the target's parameter checked non-negative. A hit farther than maxDistance is a miss; a negative or NaN maxDistance throws System.ArgumentException.</summary>
+        /// <summary>First hit of a ray on a ray (2D): the target ray is a wall the ray crosses (its origin included); Normal is its normal on the side the ray comes from; a ray running along the target hits at T = 0 when its origin lies on the target, else at the target's origin when that lies ahead, with Normal −Direction. Algorithm: the crossing s = −(Direction × (target.Origin − Origin)) / (Direction × e) on the target, checked non-negative, T = Direction·(target.Origin + s·e − Origin). A hit farther than maxDistance is a miss; a negative or NaN maxDistance throws System.ArgumentException.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static RayHit2 Cast(Ray2 ray, Ray2 shape, double maxDistance = double.PositiveInfinity)
         {

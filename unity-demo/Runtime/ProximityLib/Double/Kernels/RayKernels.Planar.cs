@@ -58,8 +58,8 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// Ray against a 2D line (p, unit e; <paramref name="half"/>: only s ≥ 0, a ray): crossed where d × (p + s·e − o)
-        /// = 0, at T = ((p − o) × e)/(d × e). Parallel: T = 0 when the origin lies on it (a ray target: at its origin when
-        /// that lies ahead on the ray's line), else a miss.
+        /// = 0, s = −(d × (p − o))/(d × e), at T = d·(p + s·e − o). Parallel: T = 0 when the origin lies on it (a ray target:
+        /// at its origin when that lies ahead on the ray's line), else a miss.
         /// </summary>
         public static RayHit2 RayLine2(Vector2D o, Vector2D d, Vector2D p, Vector2D e, bool half, out bool inRange)
         {
@@ -75,14 +75,16 @@ namespace ProximityLib.Double
             }
             double s = -fp / fe;
             if (half && !(s >= 0)) return RayHit2.Miss;
-            double t = Vector2D.Cross(w, e) / fe;
+            // T from the crossing's own offset, not from (w × e)/fe: nearly parallel lines make both s and that ratio noise,
+            // and T must stay the crossing's distance along the ray (the point then lies on the target and on the ray).
+            double t = Vector2D.Dot(w + e * s, d);
             if (!(t >= 0)) return RayHit2.Miss;
             return new RayHit2(t + 0.0, p + e * s, Facing(e, d), false);
         }
 
         /// <summary>
         /// Ray against a closed solid 2D triangle: the ray clipped by the three edges' inner sides (Cyrus–Beck), each side
-        /// function cross(Q − P, x − P) formed from differences. The origin on the boundary is a hit at 0 with the first
+        /// function cross(Q − P, x − P) formed from differences, and by the bounding box. The origin on the boundary is a hit at 0 with the first
         /// such edge's outward normal (A→B, B→C, C→A of the counter-clockwise order). A degenerate triangle is the segment
         /// or point it is.
         /// </summary>
@@ -103,19 +105,38 @@ namespace ProximityLib.Double
             var eab = b - a;
             var ebc = c - b;
             var eca = a - c;
-            // Side of the origin for each edge: positive inside.
+            // Side of the origin for each edge: positive inside. A sliver's edge lines are parallel to rounding, so far from
+            // its vertices their side functions and clip times are noise: the triangle also lies in its bounding box (offsets
+            // from the origin, lo ≤ 0 ≤ hi when the origin is in it), which the origin must be in and which clips the ray.
+            double loX = Math.Min(wa.X, Math.Min(wb.X, wc.X)), hiX = Math.Max(wa.X, Math.Max(wb.X, wc.X));
+            double loY = Math.Min(wa.Y, Math.Min(wb.Y, wc.Y)), hiY = Math.Max(wa.Y, Math.Max(wb.Y, wc.Y));
             double fab = Vector2D.Cross(eab, -wa), fbc = Vector2D.Cross(ebc, -wb), fca = Vector2D.Cross(eca, -wc);
-            if (fab > 0 && fbc > 0 && fca > 0) return RayHit2.Inside(o);
-            if (fab >= 0 && fbc >= 0 && fca >= 0)
-                return new RayHit2(0, o, Outward(fab == 0 ? eab : fbc == 0 ? ebc : eca), false);
+            if (loX <= 0 && hiX >= 0 && loY <= 0 && hiY >= 0)
+            {
+                if (fab > 0 && fbc > 0 && fca > 0) return RayHit2.Inside(o);
+                if (fab >= 0 && fbc >= 0 && fca >= 0)
+                    return new RayHit2(0, o, Outward(fab == 0 ? eab : fbc == 0 ? ebc : eca), false);
+            }
             double enter = double.NegativeInfinity, exit = double.PositiveInfinity;
             var entry = eab;
             if (!Clip(fab, Vector2D.Cross(eab, d), eab, ref enter, ref exit, ref entry)
                 || !Clip(fbc, Vector2D.Cross(ebc, d), ebc, ref enter, ref exit, ref entry)
                 || !Clip(fca, Vector2D.Cross(eca, d), eca, ref enter, ref exit, ref entry)
+                || !Slab(loX, hiX, d.X, ref enter, ref exit) || !Slab(loY, hiY, d.Y, ref enter, ref exit)
                 || !(enter <= exit) || !(enter >= 0))
                 return RayHit2.Miss;
             return new RayHit2(enter, o + d * enter, Outward(entry), false);
+        }
+
+        /// <summary>The ray clipped to lo ≤ t·v ≤ hi (offsets from the origin); the entry's normal stays the edge's. False when it misses the slab.</summary>
+        private static bool Slab(double lo, double hi, double v, ref double enter, ref double exit)
+        {
+            if (v == 0) return lo <= 0 && hi >= 0;
+            double t1 = lo / v, t2 = hi / v;
+            double near = v > 0 ? t1 : t2, far = v > 0 ? t2 : t1;
+            if (near > enter) enter = near;
+            if (far < exit) exit = far;
+            return true;
         }
 
         /// <summary>The outward unit normal of a counter-clockwise edge e (its right-hand side).</summary>

@@ -14,6 +14,12 @@ namespace ProximityLib.Double
         /// <summary>2^-40: a point or segment (3D) is hit when the ray passes within this much of the local scale of it.</summary>
         public const double PassThrough = 9.094947017729282e-13;
 
+        /// <summary>2^-46: a ray–triangle determinant below this times m and its sheared coordinates' sum is rounding (see <see cref="RayTriangle"/>).</summary>
+        private const double DetNoise = 1.4210854715202004e-14;
+
+        /// <summary>2^-20: a triangle with |(B − A) × (C − A)|² below this times |B − A|²·|C − A|² is a sliver (see <see cref="RayTriangle"/>).</summary>
+        private const double Sliver = 9.5367431640625e-07;
+
         /// <summary>
         /// Ray against a closed ball. The perpendicular distance h of the center from the line gives the half-chord
         /// √((r − h)(r + h)) without the cancellation of b² − c, and the entry is (|w|² − r²)/(−b + half-chord), the
@@ -255,8 +261,9 @@ namespace ProximityLib.Double
         /// Ray against a two-sided triangle, watertight (Woop, Benthin and Wald, "Watertight Ray/Triangle Intersection",
         /// JCGT 2013): the vertices relative to the origin are sheared so the ray runs along the dominant axis, and the
         /// edge functions are 2D cross products of per-vertex values, so a shared edge gives both triangles the same value
-        /// of opposite sign: a ray through it hits at least one. A zero determinant (the ray parallel to the plane, or a
-        /// degenerate triangle) answers the triangle as the segments it is seen as (<see cref="RayEdgeOn"/>).
+        /// of opposite sign: a ray through it hits at least one. A determinant at rounding level (the ray parallel to the
+        /// plane, or the triangle degenerate, to rounding) answers the triangle as the segments it is seen as
+        /// (<see cref="RayEdgeOn"/>).
         /// </summary>
         public static RayHit3 RayTriangle(Vector3D o, Vector3D d, Vector3D A, Vector3D B, Vector3D C, out bool inRange)
         {
@@ -275,12 +282,26 @@ namespace ProximityLib.Double
             double cx = Vec.Get(c, kx) - sx * cz, cy = Vec.Get(c, ky) - sy * cz;
             double U = cx * by - cy * bx, V = ax * cy - ay * cx, W = bx * ay - by * ax;
             double det = U + V + W;
-            if (det == 0) return RayEdgeOn(o, d, A, B, C, m);
+            // Each sheared coordinate is within 5u·m of its exact value, so det within about 70u·m times their sum: a det
+            // below 2^−46·m·that sum is rounding (the ray in the plane, or the triangle degenerate, to rounding), and its
+            // sign, U, V, W and t would be noise; the edge-on answer is the one within the pass-through tolerance.
+            double sheared = Math.Abs(ax) + Math.Abs(ay) + Math.Abs(bx) + Math.Abs(by) + Math.Abs(cx) + Math.Abs(cy);
+            if (!(Math.Abs(det) > DetNoise * m * sheared)) return RayEdgeOn(o, d, A, B, C, m);
             if ((U < 0 || V < 0 || W < 0) && (U > 0 || V > 0 || W > 0)) return RayHit3.Miss;
-            double t = (U * az + V * bz + W * cz) / (det * dz);
+            // T is the barycentric average of the vertices' depths, consistent with the sheared test (a graze stays on the
+            // triangle), except for a sliver (sin² of its widest angle below 2^−20): there the weights U, V, W / det carry
+            // det's error magnified by its thinness, and T comes from the plane of the edges' cross product, the exact
+            // crossing with the plane of vertices moved by rounding.
+            var e1 = B - A;
+            var e2 = C - A;
+            var N = Vector3D.Cross(e1, e2);
+            if (N == default) return RayEdgeOn(o, d, A, B, C, m); // degenerate after all: the segment or point it is
+            double t = N.LengthSquared < Sliver * e1.LengthSquared * e2.LengthSquared
+                ? Vector3D.Dot(N, a) / Vector3D.Dot(N, d)
+                : (U * az + V * bz + W * cz) / (det * dz);
             if (!(t >= 0)) return RayHit3.Miss;
-            var n = Unit(Vector3D.Cross(B - A, C - A), -d);
-            return new RayHit3(t + 0.0, A + (B - A) * (V / det) + (C - A) * (W / det), Vector3D.Dot(n, d) > 0 ? -n : n, false);
+            var n = Unit(N, -d);
+            return new RayHit3(t + 0.0, A + e1 * (V / det) + e2 * (W / det), Vector3D.Dot(n, d) > 0 ? -n : n, false);
         }
 
         /// <summary>
