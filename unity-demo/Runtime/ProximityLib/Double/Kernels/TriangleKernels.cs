@@ -336,22 +336,46 @@ namespace ProximityLib.Double
         /// <summary>
         /// The least translation of segment [p0, p1] that clears a 3D triangle it meets, over the facet normals of their
         /// Minkowski difference (a prism: N and the segment × edge directions), each projected honestly, so a noisy axis
-        /// can only overestimate. Returns the depth (0 when no axis is left: the difference is flat) and the unit direction
-        /// to move the segment (zero when none).
+        /// can only overestimate. Returns the depth and the unit direction to move the segment (zero when none). A flat
+        /// triangle (within 2u·S of its edges) has a prism no thicker than that: its depth is 0, as the segment's it is.
         /// </summary>
         private static double SegmentTrianglePenetration(Vector3D p0, Vector3D p1, in TriFrame f, out Vector3D dir)
         {
+            dir = default;
+            if (f.Flat) return 0;
             var q0 = (p0 - f.A) * f.K;
             var q1 = (p1 - f.A) * f.K;
-            var d = q1 - q0;
+            // The segment × edge axes from the exact differences (rounded part and rest): the plain cross product of the
+            // rounded differences turns by u/sinθ for an axis at angle θ to an edge, the depth along it then by u·S/sinθ.
+            ExactDiff(p1, p0, f.K, out var d, out var dl);
             double best = double.PositiveInfinity;
-            dir = default;
             SegmentAxis(f.N, q0, q1, f, ref best, ref dir);
-            SegmentAxis(Vector3D.Cross(d, f.E1), q0, q1, f, ref best, ref dir);
-            SegmentAxis(Vector3D.Cross(d, f.E2), q0, q1, f, ref best, ref dir);
-            SegmentAxis(Vector3D.Cross(d, f.E3), q0, q1, f, ref best, ref dir);
+            ExactDiff(f.B, f.A, f.K, out var e, out var el);
+            SegmentAxis(FacetAxis(d, dl, e, el), q0, q1, f, ref best, ref dir);
+            ExactDiff(f.C, f.A, f.K, out e, out el);
+            SegmentAxis(FacetAxis(d, dl, e, el), q0, q1, f, ref best, ref dir);
+            ExactDiff(f.C, f.B, f.K, out e, out el);
+            SegmentAxis(FacetAxis(d, dl, e, el), q0, q1, f, ref best, ref dir);
             return best < double.PositiveInfinity ? Math.Max(0, best) / f.K : 0;
         }
+
+        /// <summary>(x − y)·k exactly as a rounded part and the rest (Knuth's two-sum per component; k a power of two).</summary>
+        private static void ExactDiff(Vector3D x, Vector3D y, double k, out Vector3D h, out Vector3D l)
+        {
+            TwoDiff(x.X, y.X, k, out double hx, out double lx);
+            TwoDiff(x.Y, y.Y, k, out double hy, out double ly);
+            TwoDiff(x.Z, y.Z, k, out double hz, out double lz);
+            h = new Vector3D(hx, hy, hz);
+            l = new Vector3D(lx, ly, lz);
+        }
+
+        /// <summary>
+        /// (dh + dl) × (eh + el) with each component to about a rounding of itself while the angle between d and e is well
+        /// above u: the rounded parts' product formed with exact products, plus the first-order terms of the rests (the
+        /// second-order one is below u² of |d||e|).
+        /// </summary>
+        private static Vector3D FacetAxis(Vector3D dh, Vector3D dl, Vector3D eh, Vector3D el) =>
+            AccurateCross(dh, eh) + (Vector3D.Cross(dl, eh) + Vector3D.Cross(dh, el));
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static void SegmentAxis(Vector3D axis, Vector3D q0, Vector3D q1, in TriFrame f, ref double best, ref Vector3D dir)
@@ -459,8 +483,10 @@ namespace ProximityLib.Double
             }
             else
             {
+                // Flat: the segment it is. Crossing it has a depth only for a capsule's axis, and only a proper crossing
+                // (exact signs: the rounded distance of two crossing segments is rounding noise, not 0).
                 g = EdgesDistance(p0, p1, f, out s, out onSeg, out onTri);
-                apart = g > 0 || !flatDepth;
+                apart = !flatDepth || !CrossesFlat2(p0, p1, f);
             }
             if (apart)
             {
@@ -482,6 +508,28 @@ namespace ProximityLib.Double
             EdgesDistance(p0 + push, p1 + push, f, out s, out onSeg, out onTri);
             onSeg -= push;
             return depth > 0 ? -depth : 0;
+        }
+
+        /// <summary>
+        /// Whether segment [p0, p1] properly crosses a flat 2D triangle (exactly collinear vertices): the segment and the
+        /// triangle's hull (its extreme vertices along the coordinate of larger spread) each have their ends strictly on
+        /// either side of the other's line, by exact orientation signs.
+        /// </summary>
+        private static bool CrossesFlat2(Vector3D p0, Vector3D p1, in TriFrame f)
+        {
+            bool alongX = Math.Max(Math.Abs(f.E1.X), Math.Abs(f.E2.X)) >= Math.Max(Math.Abs(f.E1.Y), Math.Abs(f.E2.Y));
+            Vector3D lo = f.A, hi = f.A;
+            Extend(f.B, alongX, ref lo, ref hi);
+            Extend(f.C, alongX, ref lo, ref hi);
+            return OrientationSign(lo, hi, p0, f.K) * OrientationSign(lo, hi, p1, f.K) < 0
+                && OrientationSign(p0, p1, lo, f.K) * OrientationSign(p0, p1, hi, f.K) < 0;
+        }
+
+        private static void Extend(Vector3D v, bool alongX, ref Vector3D lo, ref Vector3D hi)
+        {
+            double x = alongX ? v.X : v.Y;
+            if (x < (alongX ? lo.X : lo.Y)) lo = v;
+            if (x > (alongX ? hi.X : hi.Y)) hi = v;
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
