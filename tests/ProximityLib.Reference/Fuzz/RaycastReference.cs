@@ -30,9 +30,11 @@ namespace ProximityReference.Fuzz
     /// backward form only.</item>
     /// <item>2D segments, lines and rays (walls) and the 3D triangle (two-sided, zero thickness): a crossing whose
     /// endpoints or edges are farther than δ from it, with the origin farther than δ from the wall or plane, must be
-    /// hit with |T − t*| ≤ δ/sin (sin the crossing angle); a ray exactly along a wall or in the triangle's plane is
-    /// answered as the in-plane solid (the 3D triangle) or the first point along the wall; any hit needs o + T·d within
-    /// δ of the target (3D triangle: plus the edge-on path's tolerance).</item>
+    /// hit with |T − t*| ≤ δ/sin (sin the crossing angle; a 3D triangle: F·δ/cos, F the tilt factor of its plane when
+    /// its vertices move by δ, large for slivers; a graze also up to 2·tol/cos early, edge-on); a ray exactly along a
+    /// wall or in the triangle's plane is answered as the in-plane solid (the 3D triangle) or the first point along the
+    /// wall; any hit needs o + T·d within δ of the target (3D triangle: plus the edge-on path's tolerance and B·u·F·size,
+    /// its plane's orientation known to the cross product's rounding).</item>
     /// </list>
     /// </summary>
     public abstract class CastRef
@@ -130,7 +132,7 @@ namespace ProximityReference.Fuzz
                     }
                     if (n.LengthSquared.IsZero)
                         return new PassRef(o, d, new[] { PassRef.Piece.Segment(P, Q), PassRef.Piece.Segment(Q, H), PassRef.Piece.Segment(H, P) });
-                    return new TriangleRef(o, d, P, Q, H);
+                    return new TriangleRef(o, d, P, Q, H, relative);
                 }
             }
         }
@@ -393,7 +395,12 @@ namespace ProximityReference.Fuzz
             public readonly Surd T;
             public readonly bool Certain, Possible;
             public readonly string What;
-            public Candidate(Surd t, bool certain, bool possible, string what) { T = t; Certain = certain; Possible = possible; What = what; }
+            /// <summary>How far a δ perturbation moves it along the ray, per δ: 1, or 1/sin θ for the closest approach of two lines at angle θ.</summary>
+            public readonly double Kappa;
+            public Candidate(Surd t, bool certain, bool possible, string what, double kappa = 1)
+            {
+                T = t; Certain = certain; Possible = possible; What = what; Kappa = kappa;
+            }
         }
 
         private readonly Piece[] _pieces;
@@ -434,7 +441,7 @@ namespace ProximityReference.Fuzz
         }
 
         /// <summary>A point x = X/s (s &gt; 0) on the target as a candidate: t = (x − o)·d/|d|² clamped at 0, within tol of the ray's line and t ≥ −tol.</summary>
-        private void PointCandidate(DyVec X, Dy s, Dy lo, Dy hi, string what)
+        private void PointCandidate(DyVec X, Dy s, Dy lo, Dy hi, string what, double kappa = 1)
         {
             var w = X - O * s;
             var wd = DyVec.Dot(w, D);
@@ -443,8 +450,11 @@ namespace ProximityReference.Fuzz
             bool possible = Pass(hi);
             if (!possible) return;
             var t = wd.Sign > 0 ? Surd.Ratio(wd, s * DD) : Surd.Zero;
-            _candidates.Add(new Candidate(t, Pass(lo), true, what));
+            _candidates.Add(new Candidate(t, Pass(lo), true, what, kappa));
         }
+
+        /// <summary>1/sin θ of two directions (|e|·|d|/|e × d|), for the closest approach's sensitivity.</summary>
+        private double Kappa(DyVec e, Dy den) => Math.Min(Math.Sqrt(Dy.Ratio(e.LengthSquared * DD, den)), Math.ScaleB(1, 60));
 
         private void Evaluate(Piece p)
         {
@@ -475,11 +485,11 @@ namespace ProximityReference.Fuzz
                     var X = p.A * den + e * num;
                     var margin = den * Dy.Pow2(-30);
                     int before = _candidates.Count;
-                    PointCandidate(X, den, lo, hi, "the closest approach");
+                    PointCandidate(X, den, lo, hi, "the closest approach", Kappa(e, den));
                     if (_candidates.Count > before && (num < margin || num > den - margin))
                     {
                         var c = _candidates[before];
-                        _candidates[before] = new Candidate(c.T, false, true, c.What);
+                        _candidates[before] = new Candidate(c.T, false, true, c.What, c.Kappa);
                     }
                     break;
                 }
@@ -505,12 +515,12 @@ namespace ProximityReference.Fuzz
                     if (skew)
                     {
                         int before = _candidates.Count;
-                        PointCandidate(p.A * den + e * num, den, lo, hi, "the closest approach");
+                        PointCandidate(p.A * den + e * num, den, lo, hi, "the closest approach", Kappa(e, den));
                         // Nearly parallel: the library's rounded approach can lie anywhere along the overlap, so it forces nothing.
                         if (_ill && _candidates.Count > before)
                         {
                             var c = _candidates[before];
-                            _candidates[before] = new Candidate(c.T, false, true, c.What);
+                            _candidates[before] = new Candidate(c.T, false, true, c.What, c.Kappa);
                         }
                     }
                     else if (p.Half) PointCandidate(p.A, one, lo, hi, "the target ray's origin");
@@ -523,22 +533,24 @@ namespace ProximityReference.Fuzz
         {
             Surd? certain = null, possible = null;
             string certainWhat = "";
+            double certainKappa = 1, possibleKappa = 1;
             foreach (var c in _candidates)
             {
-                if (c.Certain && (!certain.HasValue || c.T.CompareTo(certain.Value) < 0)) { certain = c.T; certainWhat = c.What; }
-                if (c.Possible && (!possible.HasValue || c.T.CompareTo(possible.Value) < 0)) possible = c.T;
+                if (c.Certain && (!certain.HasValue || c.T.CompareTo(certain.Value) < 0)) { certain = c.T; certainWhat = c.What; certainKappa = c.Kappa; }
+                if (c.Possible && (!possible.HasValue || c.T.CompareTo(possible.Value) < 0)) { possible = c.T; possibleKappa = c.Kappa; }
             }
             if (!hit)
             {
                 if (certain.HasValue) problems.Add($"a miss, but {certainWhat} passes within tol·(1 − 2^−10) at t = {Show(certain)}");
                 return;
             }
-            if (certain.HasValue && certain.Value.CompareTo(t - delta - rho) < 0)
-                problems.Add($"T = {t.ToDouble():R} is after {certainWhat}, within tol·(1 − 2^−10) at t = {Show(certain)} (allowed δ + ρ = {(delta + rho).ToDouble():G4})");
+            var lateBy = delta * Dy.From(certainKappa) + rho;
+            if (certain.HasValue && certain.Value.CompareTo(t - lateBy) < 0)
+                problems.Add($"T = {t.ToDouble():R} is after {certainWhat}, within tol·(1 − 2^−10) at t = {Show(certain)} (allowed κ·δ + ρ = {lateBy.ToDouble():G4})");
             if (!_ill)
             {
                 if (!possible.HasValue) problems.Add($"hit at T = {t.ToDouble():R}, but no documented candidate passes within tol·(1 + 2^−10)");
-                else if (possible.Value.CompareTo(t + delta + rho) > 0)
+                else if (possible.Value.CompareTo(t + delta * Dy.From(possibleKappa) + rho) > 0)
                     problems.Add($"T = {t.ToDouble():R} is before every candidate within tol·(1 + 2^−10) (the first at {Show(possible)})");
             }
             var reach = _tolMax * Dy.From(1.4142135623730951 * (1 + Band)) + delta + rho;
@@ -547,7 +559,7 @@ namespace ProximityReference.Fuzz
 
         public override Surd? WellConditioned(Dy delta)
         {
-            if (_ill || _candidates.Count == 0 || _candidates.Any(c => !c.Certain)) return null;
+            if (_ill || _candidates.Count == 0 || _candidates.Any(c => !c.Certain || c.Kappa > 2)) return null;
             return Nominal;
         }
 
@@ -724,9 +736,18 @@ namespace ProximityReference.Fuzz
         private readonly Dy _nn, _nd, _h0, _tolEdge;
         private readonly Polytope? _plane; // the in-plane solid when the ray lies in the plane
         private readonly Surd? _nominal;
+        /// <summary>
+        /// How far moving the vertices by δ moves the plane at the crossing x*, per δ: the plane shifts by δ and tilts by
+        /// up to 2δ(|B − A| + |C − A|)/|n| about a vertex, so F = 1 + 2·max|x* − V|·(|B − A| + |C − A|)/|n| (large for slivers).
+        /// </summary>
+        private readonly double _tilt = 1;
+        private readonly double _cos;
+        /// <summary>B·u: the plane's orientation is known to its cross product's rounding, a tilt of about u·F per unit size.</summary>
+        private readonly Dy _relative, _size;
 
-        public TriangleRef(DyVec o, DyVec d, DyVec a, DyVec b, DyVec c) : base(o, d)
+        public TriangleRef(DyVec o, DyVec d, DyVec a, DyVec b, DyVec c, Dy relative = default) : base(o, d)
         {
+            _relative = relative;
             _a = a; _b = b; _c = c;
             _n = Roots.Cross(b - a, c - a);
             _nn = _n.LengthSquared;
@@ -737,6 +758,17 @@ namespace ProximityReference.Fuzz
             _tolEdge = PassRef.Tolerance * Dy.From(m * (1 + PassRef.Band));
             if (_nd.IsZero && _h0.IsZero) _plane = Polytope.Triangle(a, b, c, _n);
             _nominal = First();
+            _cos = _nn.IsZero ? 0 : Math.Abs(Dy.Ratio(_nd, Roots.SqrtUpper(_nn * DD)));
+            _size = Dy.Max(Roots.MaxAbs(b - a), Dy.Max(Roots.MaxAbs(c - a), Roots.MaxAbs(c - b)));
+            if (_nominal.HasValue && _plane == null)
+            {
+                // In dyadics (any magnitude), to 30 bits: a tolerance, not a decision.
+                var x = o + d * Dy.From(_nominal.Value.ToDouble());
+                var reach2 = new[] { a, b, c }.Select(v => (x - v).LengthSquared).Aggregate(Dy.Max);
+                var arms = Roots.Sqrt((b - a).LengthSquared, 30) + Roots.Sqrt((c - a).LengthSquared, 30);
+                double f = 1 + 2 * Dy.Ratio(Roots.Sqrt(reach2, 30) * arms, Roots.Sqrt(_nn, 30));
+                _tilt = double.IsFinite(f) ? Math.Min(f, Math.ScaleB(1, 60)) : Math.ScaleB(1, 60);
+            }
         }
 
         public override bool IsSolid => false;
@@ -757,12 +789,16 @@ namespace ProximityReference.Fuzz
         /// <summary>δ plus the edge-on path's tolerance: how far a hit may lie from the triangle.</summary>
         public Dy Reach(Dy delta) => delta + _tolEdge * Dy.From(2);
 
-        /// <summary>A crossing with the origin and every edge farther than δ_w from it, at an angle not below 2^−30.</summary>
-        private bool Robust(Dy dw)
+        /// <summary>
+        /// A crossing with the origin farther than δ_w + F·δ from the plane and every edge farther than δ_w + F·δ/cos from it
+        /// (the tilt moves it that far), at an angle not below 2^−30.
+        /// </summary>
+        private bool Robust(Dy dw, Dy delta)
         {
             if (_plane != null || _nd.IsZero || !_nominal.HasValue) return false;
             if (_nd.Square() < Dy.Pow2(-60) * _nn * DD) return false;
-            if (_h0.Square() <= dw.Square() * _nn) return false;
+            if (_h0.Square() <= (dw + delta * Dy.From(_tilt)).Square() * _nn) return false;
+            dw += delta * Dy.From(_tilt / _cos);
             var X = O * _nd + D * _h0;
             foreach (var (p, q) in Edges())
             {
@@ -775,12 +811,22 @@ namespace ProximityReference.Fuzz
         public override void CheckT(bool hit, Dy t, bool startsInside, Dy delta, Dy rho, List<string> problems, bool insideUnknown = false)
         {
             var dw = Reach(delta);
-            if (Robust(dw))
+            if (Robust(dw, delta))
             {
                 if (!hit) problems.Add($"a miss, but the ray crosses the triangle at t = {Show(_nominal)} farther than δ_w = {dw.ToDouble():G4} from its edges and the origin");
-                // The plane moved by δ moves the crossing by δ/cos (the edges are farther than δ_w: they do not decide it).
-                else if (Dy.Abs(t * _nd - _h0) > delta * Roots.SqrtUpper(_nn) + rho * Dy.Abs(_nd))
-                    problems.Add($"T = {t.ToDouble():R} but the robust crossing is at {Show(_nominal)}: more than δ/cos + ρ (δ = {delta.ToDouble():G4}, cos = {Dy.Ratio(Dy.Abs(_nd), Roots.SqrtUpper(_nn * DD)):G4})");
+                else
+                {
+                    // The plane moved by δ moves the crossing by δ/cos (the edges are farther than δ_w: they do not decide
+                    // it). A grazing ray (cos < 2^−10) may be answered edge-on, at the first edge within the pass-through
+                    // tolerance, up to 2·tol/cos before the crossing.
+                    var diff = t * _nd - _h0; // (T − t*)·nd
+                    var late = diff * Dy.From(_nd.Sign);
+                    var slack = delta * Dy.From(_tilt) * Roots.SqrtUpper(_nn) + rho * Dy.Abs(_nd);
+                    bool grazing = _nd.Square() < Dy.Pow2(-20) * _nn * DD;
+                    var early = grazing ? slack + _tolEdge * Dy.From(2) * Roots.SqrtUpper(_nn) : slack;
+                    if (late > slack || -late > early)
+                        problems.Add($"T = {t.ToDouble():R} but the robust crossing is at {Show(_nominal)}: more than F·δ/cos + ρ (δ = {delta.ToDouble():G4}, F = {_tilt:G4}, cos = {_cos:G4}{(grazing ? ", edge-on tolerance allowed before it" : "")})");
+                }
             }
             else if (_plane != null)
             {
@@ -794,12 +840,18 @@ namespace ProximityReference.Fuzz
             }
             else if (_nd.IsZero && _h0.Square() > dw.Square() * _nn && hit)
                 problems.Add($"hit at T = {t.ToDouble():R}, but the ray is parallel to the plane and farther than δ_w = {dw.ToDouble():G4} from it");
-            if (hit && !OnTarget(At(t), dw + rho * Roots.SqrtUpper(DD) * Dy.From(2)))
-                problems.Add($"o + T·d is farther than δ_w + 2ρ = {(dw + rho * Dy.From(2)).ToDouble():G4} from the triangle");
+            // A sliver's plane is known only to its cross product's rounding: a tilt of about B·u·F, moving the crossing up to
+            // B·u·F·size off the triangle (F the tilt factor; about 1–10 for a triangle that is not a sliver).
+            var near = dw + rho * Roots.SqrtUpper(DD) * Dy.From(2) + _relative * Dy.From(_tilt) * _size;
+            if (hit && !OnTarget(At(t), near))
+                problems.Add($"o + T·d is farther than δ_w + 2ρ + B·u·F·size = {near.ToDouble():G4} from the triangle");
         }
 
         public override Surd? WellConditioned(Dy delta) =>
-            Robust(Reach(delta)) && _nd.Square() * Dy.From(4) >= _nn * DD ? _nominal : null;
+            Robust(Reach(delta), delta) && _cos >= 0.5 && _tilt <= 8 ? _nominal : null;
+
+        /// <summary>F/cos: how far a δ move of the vertices can move the hit along the ray, per δ (for the point's check).</summary>
+        public double Conditioning => _cos > 0 ? _tilt / _cos : double.PositiveInfinity;
 
         public override bool OnTarget(DyVec x, Dy tol) => Core.NearTriangle(x, _a, _b, _c, tol);
 
@@ -810,6 +862,6 @@ namespace ProximityReference.Fuzz
         public DyVec Normal => _n;
 
         public override string Describe(Dy delta) =>
-            $"exact crossing {Show(_nominal)}; {(_plane != null ? "the ray lies in the plane" : Robust(Reach(delta)) ? "robust" : "not robust")} at δ_w = {Reach(delta).ToDouble():G4}; n·d = {_nd.ToDouble():G4}";
+            $"exact crossing {Show(_nominal)}; {(_plane != null ? "the ray lies in the plane" : Robust(Reach(delta), delta) ? "robust" : "not robust")} at δ_w = {Reach(delta).ToDouble():G4}; n·d = {_nd.ToDouble():G4}, cos = {_cos:G4}, tilt factor F = {_tilt:G4}";
     }
 }
