@@ -17,9 +17,6 @@ namespace ProximityLib.Double
         /// <summary>2^-46: a ray–triangle determinant below this times m and its sheared coordinates' sum is rounding (see <see cref="RayTriangle"/>).</summary>
         private const double DetNoise = 1.4210854715202004e-14;
 
-        /// <summary>2^-20: a triangle with |(B − A) × (C − A)|² below this times |B − A|²·|C − A|² is a sliver (see <see cref="RayTriangle"/>).</summary>
-        private const double Sliver = 9.5367431640625e-07;
-
         /// <summary>
         /// Ray against a closed ball. The perpendicular distance h of the center from the line gives the half-chord
         /// √((r − h)(r + h)) without the cancellation of b² − c, and the entry is (|w|² − r²)/(−b + half-chord), the
@@ -288,17 +285,11 @@ namespace ProximityLib.Double
             double sheared = Math.Abs(ax) + Math.Abs(ay) + Math.Abs(bx) + Math.Abs(by) + Math.Abs(cx) + Math.Abs(cy);
             if (!(Math.Abs(det) > DetNoise * m * sheared)) return RayEdgeOn(o, d, A, B, C, m);
             if ((U < 0 || V < 0 || W < 0) && (U > 0 || V > 0 || W > 0)) return RayHit3.Miss;
-            // T is the barycentric average of the vertices' depths, consistent with the sheared test (a graze stays on the
-            // triangle), except for a sliver (sin² of its widest angle below 2^−20): there the weights U, V, W / det carry
-            // det's error magnified by its thinness, and T comes from the plane of the edges' cross product, the exact
-            // crossing with the plane of vertices moved by rounding.
             var e1 = B - A;
             var e2 = C - A;
             var N = Vector3D.Cross(e1, e2);
             if (N == default) return RayEdgeOn(o, d, A, B, C, m); // degenerate after all: the segment or point it is
-            double t = N.LengthSquared < Sliver * e1.LengthSquared * e2.LengthSquared
-                ? Vector3D.Dot(N, a) / Vector3D.Dot(N, d)
-                : (U * az + V * bz + W * cz) / (det * dz);
+            double t = (U * az + V * bz + W * cz) / (det * dz);
             if (!(t >= 0)) return RayHit3.Miss;
             var n = Unit(N, -d);
             return new RayHit3(t + 0.0, A + e1 * (V / det) + e2 * (W / det), Vector3D.Dot(n, d) > 0 ? -n : n, false);
