@@ -33,8 +33,8 @@ namespace ProximityReference.Fuzz
     /// hit with |T − t*| ≤ δ/sin (sin the crossing angle; a 3D triangle: F·δ/cos, F the tilt factor of its plane when
     /// its vertices move by δ, large for slivers; a graze also up to 2·tol/cos early, edge-on); a ray exactly along a
     /// wall or in the triangle's plane is answered as the in-plane solid (the 3D triangle) or the first point along the
-    /// wall; any hit needs o + T·d within δ of the target (3D triangle: plus the edge-on path's tolerance and B·u·F·size,
-    /// its plane's orientation known to the cross product's rounding).</item>
+    /// wall; any hit needs o + T·d within δ of the target (3D triangle: plus the edge-on path's tolerance and, for a
+    /// sliver, min(B·u·m·F/cos, its altitude): its barycentric weights' rounding over its area).</item>
     /// </list>
     /// </summary>
     public abstract class CastRef
@@ -742,8 +742,8 @@ namespace ProximityReference.Fuzz
         /// </summary>
         private readonly double _tilt = 1;
         private readonly double _cos;
-        /// <summary>B·u: the plane's orientation is known to its cross product's rounding, a tilt of about u·F per unit size.</summary>
-        private readonly Dy _relative, _size;
+        /// <summary>B·u, the largest vertex offset m from the origin, and the smallest altitude (see the sliver allowance in CheckT).</summary>
+        private readonly Dy _relative, _m, _altitude;
 
         public TriangleRef(DyVec o, DyVec d, DyVec a, DyVec b, DyVec c, Dy relative = default) : base(o, d)
         {
@@ -759,7 +759,9 @@ namespace ProximityReference.Fuzz
             if (_nd.IsZero && _h0.IsZero) _plane = Polytope.Triangle(a, b, c, _n);
             _nominal = First();
             _cos = _nn.IsZero ? 0 : Math.Abs(Dy.Ratio(_nd, Roots.SqrtUpper(_nn * DD)));
-            _size = Dy.Max(Roots.MaxAbs(b - a), Dy.Max(Roots.MaxAbs(c - a), Roots.MaxAbs(c - b)));
+            _m = Dy.Max(Roots.MaxAbs(a - o), Dy.Max(Roots.MaxAbs(b - o), Roots.MaxAbs(c - o)));
+            var longest = new[] { b - a, c - b, a - c }.Select(v => v.LengthSquared).Aggregate(Dy.Max);
+            _altitude = longest.IsZero ? Dy.Zero : Dy.From(Math.Sqrt(Dy.Ratio(_nn, longest)));
             if (_nominal.HasValue && _plane == null)
             {
                 // In dyadics (any magnitude), to 30 bits: a tolerance, not a decision.
@@ -840,11 +842,13 @@ namespace ProximityReference.Fuzz
             }
             else if (_nd.IsZero && _h0.Square() > dw.Square() * _nn && hit)
                 problems.Add($"hit at T = {t.ToDouble():R}, but the ray is parallel to the plane and farther than δ_w = {dw.ToDouble():G4} from it");
-            // A sliver's plane is known only to its cross product's rounding: a tilt of about B·u·F, moving the crossing up to
-            // B·u·F·size off the triangle (F the tilt factor; about 1–10 for a triangle that is not a sliver).
-            var near = dw + rho * Roots.SqrtUpper(DD) * Dy.From(2) + _relative * Dy.From(_tilt) * _size;
+            // A sliver's weights U, V, W / det carry det's rounding (about u·m·size) over its area: T is off by about
+            // u·m·F/cos, which moves o + T·d off it by up to that, but a δ-perturbed sliver stays within its altitude of
+            // it: the allowance is the smaller (F the tilt factor; about 1–10 for a triangle that is not a sliver).
+            var sliver = _cos > 0 ? Dy.Min(_relative * _m * Dy.From(Math.Min(_tilt / _cos, Math.ScaleB(1, 60))), _altitude) : Dy.Zero;
+            var near = dw + rho * Roots.SqrtUpper(DD) * Dy.From(2) + sliver;
             if (hit && !OnTarget(At(t), near))
-                problems.Add($"o + T·d is farther than δ_w + 2ρ + B·u·F·size = {near.ToDouble():G4} from the triangle");
+                problems.Add($"o + T·d is farther than δ_w + 2ρ + min(B·u·m·F/cos, altitude) = {near.ToDouble():G4} from the triangle");
         }
 
         public override Surd? WellConditioned(Dy delta) =>
@@ -854,6 +858,9 @@ namespace ProximityReference.Fuzz
         public double Conditioning => _cos > 0 ? _tilt / _cos : double.PositiveInfinity;
 
         public override bool OnTarget(DyVec x, Dy tol) => Core.NearTriangle(x, _a, _b, _c, tol);
+
+        /// <summary>The tilt factor F at the exact crossing (1 without one).</summary>
+        public double Tilt => _tilt;
 
         /// <summary>Whether the ray lies in the triangle's plane (exactly).</summary>
         public bool InPlane => _plane != null;
