@@ -55,9 +55,9 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
-        /// Ray against a 2D line (p, unit e; <paramref name="half"/>: only s ≥ 0, a ray): crossed where d × (p + s·e − o)
-        /// = 0, s = −(d × (p − o))/(d × e), at T = d·(p + s·e − o). Parallel: T = 0 when the origin lies on it (a ray target:
-        /// at its origin when that lies ahead on the ray's line), else a miss.
+        /// Ray against a 2D line (p, unit e; <paramref name="half"/>: only s ≥ 0, a ray): crossed at T = ((p − o) × e)/(d × e)
+        /// (exactly 0 for an origin on it), at the target's parameter s = (o + T·d − p)·e. Parallel: T = 0 when the origin
+        /// lies on it (a ray target: at its origin when that lies ahead on the ray's line), else a miss.
         /// </summary>
         public static RayHit2 RayLine2(Vector2D o, Vector2D d, Vector2D p, Vector2D e, bool half, out bool inRange)
         {
@@ -71,12 +71,12 @@ namespace ProximityLib.Double
                 if (!half || (Vector2D.Dot(d, e) > 0 ? g <= 0 : g >= 0)) return new RayHit2(0, o, -d, false);
                 return Vector2D.Dot(d, e) > 0 ? new RayHit2(g, p, -d, false) : RayHit2.Miss;
             }
-            double s = -fp / fe;
-            if (half && !(s >= 0)) return RayHit2.Miss;
-            // T from the crossing's own offset, not from (w × e)/fe: nearly parallel lines make both s and that ratio noise,
-            // and T must stay the crossing's distance along the ray (the point then lies on the target and on the ray).
-            double t = Vector2D.Dot(w + e * s, d);
+            double t = Vector2D.Cross(w, e) / fe;
             if (!(t >= 0)) return RayHit2.Miss;
+            // The target's parameter of the ray's point at T (not −fp/fe: nearly parallel lines make T and that ratio
+            // independent noise, and the point must be the ray's): its foot on the target, on it to rounding.
+            double s = t * Vector2D.Dot(d, e) - Vector2D.Dot(w, e);
+            if (half && !(s >= 0)) return RayHit2.Miss;
             return new RayHit2(t + 0.0, p + e * s, Facing(e, d), false);
         }
 

@@ -12,6 +12,9 @@ namespace ProximityLib.Double
         /// <summary>2^-40: a point or segment (3D) is hit when the ray passes within this much of the local scale of it.</summary>
         public const double PassThrough = 9.094947017729282e-13;
 
+        /// <summary>2^-90: |e × d|² of two unit directions below this is rounding: they are parallel (see <see cref="RayLinear"/>).</summary>
+        private const double ParallelNoise = 8.077935669463161e-28;
+
         /// <summary>2^-46: a ray–triangle determinant below this times m and its sheared coordinates' sum is rounding (see <see cref="RayTriangle"/>).</summary>
         private const double DetNoise = 1.4210854715202004e-14;
 
@@ -222,18 +225,19 @@ namespace ProximityLib.Double
         /// direction): hit when the ray passes within <see cref="PassThrough"/> of the local scale (the larger of |p − o|
         /// and the closest approach's offset from o, largest coordinate) of it. The earliest of: the origin on the target
         /// (T = 0), the lines' closest approach (the target's parameter from cross products, as in
-        /// <see cref="RaySegment"/>) when it lies on the target, else a target ray's origin on the ray. Parallel: only the
-        /// origin on the target, or a target ray's origin ahead on the ray.
+        /// <see cref="RaySegment"/>) when it lies on the target, else a target ray's origin on the ray. Parallel (to
+        /// rounding: |e × d| below 2^-45): only the origin on the target, or a target ray's origin ahead on the ray.
         /// </summary>
         public static RayHit3 RayLinear(Vector3D o, Vector3D d, Vector3D p, Vector3D e, bool targetRay, out bool inRange)
         {
             var w = p - o;
             double m = Range.MaxAbs(w);
-            // The target's parameter at the closest approach; e and d are unit, so |e × d|² neither over- nor underflows
-            // unless they are parallel to rounding (then the approach is at infinity or everywhere).
+            // The target's parameter at the closest approach; e and d are unit, so |e × d|² neither over- nor underflows.
+            // Each of its components is within about 5u of exact: below 2^−45 the lines are parallel to rounding, and the
+            // approach's place (hence the local scale m and the tolerance) would be that rounding magnified.
             var ed = Vector3D.Cross(e, d);
             double den = ed.LengthSquared, s = 0;
-            bool skew = den > 0;
+            bool skew = den > ParallelNoise;
             if (skew)
             {
                 s = -Vector3D.Dot(Vector3D.Cross(w, d), ed) / den;
