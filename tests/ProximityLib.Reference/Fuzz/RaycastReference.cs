@@ -499,17 +499,22 @@ namespace ProximityReference.Fuzz
                     var e = p.B;
                     var ed = Roots.Cross(e, D);
                     var den = ed.LengthSquared;
-                    double m = MaxAbsD(w);
+                    var ends = e.LengthSquared * DD;
+                    // The library takes directions with |e × d|² below 2^−90 (rounded) as parallel: no crossing, and a local
+                    // scale of |p − o| alone. Below 2^−94 it surely does, above 2^−86 surely not; in between either.
+                    bool parallel = den < Dy.Pow2(-94) * ends, maybeParallel = den < Dy.Pow2(-86) * ends;
+                    double mw = MaxAbsD(w), m = mw;
                     Dy num = Dy.Zero;
-                    bool skew = !den.IsZero;
+                    bool skew = !den.IsZero && !parallel;
                     if (skew)
                     {
-                        if (den < Dy.Pow2(-20) * e.LengthSquared * DD) _ill = true;
+                        if (den < Dy.Pow2(-20) * ends) _ill = true;
                         num = -DyVec.Dot(Roots.Cross(w, D), ed);
                         if (p.Half && num.Sign < 0) num = Dy.Zero;
                         m = Math.Max(m, Dy.Ratio(Roots.MaxAbs(w * den + e * num), den));
                     }
                     var (lo, hi) = Tol(m);
+                    if (maybeParallel) lo = Tol(mw).Lo; // the library's scale may be |p − o| alone
                     if (Roots.NearLinear(O, p.A, e, p.Half, hi))
                         _candidates.Add(new Candidate(Surd.Zero, Roots.NearLinear(O, p.A, e, p.Half, lo), true, "the origin on the target"));
                     if (skew)
@@ -523,7 +528,16 @@ namespace ProximityReference.Fuzz
                             _candidates[before] = new Candidate(c.T, false, true, c.What, c.Kappa);
                         }
                     }
-                    else if (p.Half) PointCandidate(p.A, one, lo, hi, "the target ray's origin");
+                    if (p.Half && maybeParallel)
+                    {
+                        int before = _candidates.Count;
+                        PointCandidate(p.A, one, lo, hi, "the target ray's origin");
+                        if (!parallel && _candidates.Count > before)
+                        {
+                            var c = _candidates[before];
+                            _candidates[before] = new Candidate(c.T, false, true, c.What, c.Kappa);
+                        }
+                    }
                     break;
                 }
             }
@@ -657,7 +671,8 @@ namespace ProximityReference.Fuzz
                     var fq = Cross2(D, _p + _e - O);
                     return _fp.Square() > d2 && fq.Square() > d2;
                 case Kind.Ray:
-                    return _fp.Square() * _ee > delta.Square() * _fe.Square();
+                    // The target's origin farther than δ from the ray's line (the crossing then lies δ/sin or more along it).
+                    return _fp.Square() > d2;
                 default:
                     return true;
             }

@@ -48,7 +48,8 @@ namespace ProximityTests.Fuzz
         /// an end's outward cone, a ray along a zero-radius capsule's axis from an origin on it reported at the far end, a
         /// zero radius on the surface with a normal along the axis; 3D triangles with a determinant at rounding level (an
         /// exactly collinear triangle missed, an in-plane ray missed, a sliver hit at a vertex off the ray, a far sliver's T
-        /// 1.7e-7 off); 2D slivers hit past their ends; nearly collinear 2D ray targets with T off the point.
+        /// 1.7e-7 off); 2D slivers hit past their ends; nearly collinear 2D ray targets with T off the point; 3D line and
+        /// ray targets parallel to rounding whose noisy crossing inflated the tolerance until an origin 3.5–14 away was on them.
         /// </summary>
         [TestCase(1, 885, TestName = "Zero-radius capsule end: normal along the ray")]
         [TestCase(1, 775, TestName = "Zero-radius capsule crossed: normal along the ray")]
@@ -63,6 +64,8 @@ namespace ProximityTests.Fuzz
         [TestCase(1, 12256, TestName = "2D sliver past its end, far origin")]
         [TestCase(2, 2533, TestName = "Nearly collinear 2D ray target")]
         [TestCase(1, 40133, TestName = "Nearly collinear 2D ray target, far along")]
+        [TestCase(12, 742522, TestName = "3D line parallel to rounding, origin far off it")]
+        [TestCase(12, 186123, TestName = "3D ray parallel to rounding, origin far off it")]
         public void CasesTheFuzzFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = CastChecker.Run(CastCase.Create(seed, index));
