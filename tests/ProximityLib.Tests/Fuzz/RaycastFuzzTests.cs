@@ -47,8 +47,9 @@ namespace ProximityTests.Fuzz
         /// tests/ProximityLib.Tests/Raycasts): zero-radius capsules and spheres whose normal pointed along the ray or out of
         /// an end's outward cone, a ray along a zero-radius capsule's axis from an origin on it reported at the far end, a
         /// zero radius on the surface with a normal along the axis; 3D triangles with a determinant at rounding level (an
-        /// exactly collinear triangle missed, an in-plane ray missed, a sliver hit at a vertex off the ray, a far sliver's T
-        /// 1.7e-7 off); 2D slivers hit past their ends; nearly collinear 2D ray targets with T off the point; 3D line and
+        /// exactly collinear triangle missed, an in-plane ray missed, a far sliver's T 1.7e-7 off; the sliver hit at a vertex
+        /// off the ray, 2:29006, is in TriangleRaycastTests: as a sliver beyond tilt factor 2^20 its replay counts as the
+        /// known issue); 2D slivers hit past their ends; nearly collinear 2D ray targets with T off the point; 3D line and
         /// ray targets parallel to rounding whose noisy crossing inflated the tolerance until an origin 3.5–14 away was on them.
         /// </summary>
         [TestCase(1, 885, TestName = "Zero-radius capsule end: normal along the ray")]
@@ -58,7 +59,6 @@ namespace ProximityTests.Fuzz
         [TestCase(2, 158575, TestName = "Zero-radius capsule, origin residual underflows")]
         [TestCase(2, 31166, TestName = "Collinear 3D triangle through its end")]
         [TestCase(2, 98926, TestName = "Ray in a 3D triangle's plane")]
-        [TestCase(2, 29006, TestName = "3D sliver, origin on it")]
         [TestCase(1, 28326, TestName = "Far 3D sliver, determinant at rounding level")]
         [TestCase(1, 18816, TestName = "2D sliver past its end")]
         [TestCase(1, 12256, TestName = "2D sliver past its end, far origin")]
