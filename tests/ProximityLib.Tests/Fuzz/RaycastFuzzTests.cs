@@ -50,7 +50,8 @@ namespace ProximityTests.Fuzz
         /// exactly collinear triangle missed, an in-plane ray missed, a far sliver's T 1.7e-7 off; the sliver hit at a vertex
         /// off the ray, 2:29006, is in TriangleRaycastTests: as a sliver beyond tilt factor 2^20 its replay counts as the
         /// known issue); 2D slivers hit past their ends; nearly collinear 2D ray targets with T off the point; 3D line and
-        /// ray targets parallel to rounding whose noisy crossing inflated the tolerance until an origin 3.5–14 away was on them.
+        /// ray targets parallel to rounding whose noisy crossing inflated the tolerance until an origin 3.5–14 away was on them;
+        /// a ray along a zero-radius capsule from behind it hitting the far end; a 2D segment's T from subnormal side values.
         /// </summary>
         [TestCase(1, 885, TestName = "Zero-radius capsule end: normal along the ray")]
         [TestCase(1, 775, TestName = "Zero-radius capsule crossed: normal along the ray")]
@@ -66,6 +67,8 @@ namespace ProximityTests.Fuzz
         [TestCase(1, 40133, TestName = "Nearly collinear 2D ray target, far along")]
         [TestCase(12, 742522, TestName = "3D line parallel to rounding, origin far off it")]
         [TestCase(12, 186123, TestName = "3D ray parallel to rounding, origin far off it")]
+        [TestCase(13, 172385, TestName = "Along a zero-radius capsule from behind it")]
+        [TestCase(13, 335771, TestName = "2D segment end a subnormal off the ray's line")]
         public void CasesTheFuzzFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = CastChecker.Run(CastCase.Create(seed, index));

@@ -76,6 +76,9 @@ namespace ProximityTests.Raycasts
             // An origin on the axis whose residual underflows (seed 2: 2:158575): −Direction too (it was along the axis).
             var tiny = V(-5e-324, 6);
             IsHit(Raycast.Cast(new Ray2(tiny, V(0, -1)), new Capsule2(V(0, 6), V(-4, 6), 0)), 0, tiny, V(0, 1));
+            // From behind the axis along it (seed 13: 13:172385): the near end, not the far end the rounding let through.
+            var ray = new Ray3(V(-12, -16, -24), V(24, 24, 24));
+            IsHit(Raycast.Cast(ray, new Capsule3(V(-4, -8, -16), V(12, 8, 0), 0)), 8 * Math.Sqrt(3), V(-4, -8, -16), -ray.Direction, 1e-14);
         }
 
         [Test]

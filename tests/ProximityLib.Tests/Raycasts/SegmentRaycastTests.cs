@@ -80,6 +80,19 @@ namespace ProximityTests.Raycasts
                 new Ray3(V(16, 40, 24), V(0, 0.125, -0.125))));
         }
 
+        /// <summary>
+        /// A 2D segment whose end lies a subnormal off the ray's line: T is the crossing's distance along the ray, with the
+        /// point. The ray-cast fuzz found it (seed 13: 13:335771): T = (gp·fq − gq·fp)/(fq − fp) with fq = 5e-324 rounded to 3,
+        /// the point at the other end, 2.83 along the ray.
+        /// </summary>
+        [Test]
+        public void SubnormalSideValuesKeepTheCrossingOnTheRay()
+        {
+            var ray = new Ray2(V(-5E-324, 14), V(1, -1));
+            var h = Raycast.Cast(ray, new Segment2(V(2, 12), V(0, 14)));
+            Assert.That(!h.Hit || (ray.PointAt(h.T) - h.Point).Length < 1e-14, h.ToString());
+        }
+
         [Test]
         public void Segments2DAreWalls()
         {

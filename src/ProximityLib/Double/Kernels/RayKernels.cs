@@ -88,9 +88,16 @@ namespace ProximityLib.Double
                 {
                     // A zero radius is the segment: any normal across it is outward at an interior point, so take the one
                     // facing the ray (in the outward cone at an end too). A ray along the axis that meets an end exactly
-                    // runs along the segment: an origin between the ends is on it (its residual was rounding).
+                    // runs along the segment: an origin between the ends is on it (its residual was rounding), else it
+                    // meets the near end first (whose own offset across the ray may have rounded away from 0).
                     if (aa > 0) best = new RayHit3(best.T, best.Point, Unit(-dn, -d), false);
                     else if (wp >= 0 && wp <= 1) best = new RayHit3(0, o, -d, false);
+                    else if (wp < 0 == dp > 0)
+                    {
+                        var near = dp > 0 ? a : b;
+                        double tn = Vector3D.Dot(near - o, d);
+                        if (tn >= 0 && tn < best.T) best = new RayHit3(tn, near, -d, false);
+                    }
                 }
             }
             return best;

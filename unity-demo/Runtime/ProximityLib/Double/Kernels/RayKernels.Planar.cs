@@ -22,8 +22,8 @@ namespace ProximityLib.Double
         /// <summary>
         /// Ray against a 2D segment [p, q], crossed as a wall. Each endpoint's side of the ray, f = d × (x − o), is a
         /// value of that endpoint alone, so segments sharing an endpoint agree on it: a ray through a polyline's vertex
-        /// hits at least one of its segments. The crossing is the convex combination (g_p·f_q − g_q·f_p)/(f_q − f_p) of
-        /// the endpoints' distances g along the ray, with weights of one sign (no cancellation). A ray along the segment
+        /// hits at least one of its segments. The crossing is the convex combination g_p + s·(g_q − g_p), s = f_p/(f_p − f_q),
+        /// of the endpoints' distances g along the ray, the point the same combination of the ends. A ray along the segment
         /// hits its nearer end (T = 0 when the origin lies on it) with normal −d.
         /// </summary>
         public static RayHit2 RaySegment2(Vector2D o, Vector2D d, Vector2D p, Vector2D q, out bool inRange)
@@ -49,9 +49,11 @@ namespace ProximityLib.Double
             var e = q - p;
             // The origin on the segment is a hit at 0 however the crossing's rounding falls.
             if (Vector2D.Cross(wp, wq) == 0 && Vector2D.Dot(wp, wq) <= 0) return new RayHit2(0, o, Facing(e, d), false);
-            double t = (gp * fq - gq * fp) / (fq - fp);
-            if (!(t >= 0)) return RayHit2.Miss;
+            // The crossing's parameter on the segment, and T as the same convex combination of the ends' distances along
+            // the ray as the point is of the ends ((gp·fq − gq·fp)/(fq − fp) rounds grossly when a side value is subnormal).
             double s = fp / (fp - fq);
+            double t = s <= 0.5 ? gp + (gq - gp) * s : gq - (gq - gp) * (1 - s);
+            if (!(t >= 0)) return RayHit2.Miss;
             var point = s <= 0.5 ? p + e * s : q - e * (1 - s);
             return new RayHit2(t + 0.0, point, Facing(e, d), false);
         }
