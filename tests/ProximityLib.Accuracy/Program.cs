@@ -10,11 +10,13 @@ using ProximityReference.Fuzz;
 // Usage: dotnet run --project tests/ProximityLib.Accuracy -c Release -- [--cases N] [--seed S] [--family NAME] [--out FILE]
 //        ... -- --fuzz N [--fuzz-new M] [--seed S] [--start I] [--start-new J] [--threads T] [--repros R] [--out FILE] [--errors FILE]
 //        ... -- --fuzz-replay SEED:INDEX
+//        ... -- --fuzz-casts N [--casts-start I] [--seed S] [--threads T] [--repros R] [--out FILE] [--errors FILE]
+//        ... -- --fuzz-casts-replay SEED:INDEX
 CultureInfo.CurrentCulture = CultureInfo.InvariantCulture;
 int cases = 20, seed = 2026;
-long fuzz = 0, start = 0, fuzzNew = -1, startNew = 0;
+long fuzz = 0, start = 0, fuzzNew = -1, startNew = 0, casts = 0, castsStart = 0;
 int threads = Environment.ProcessorCount, repros = 20;
-string? output = null, replay = null, only = null, errors = null;
+string? output = null, replay = null, only = null, errors = null, castReplay = null;
 try
 {
     for (int i = 0; i < args.Length; i++)
@@ -33,12 +35,19 @@ try
             case "--repros": repros = int.Parse(args[++i]); break;
             case "--fuzz-replay": replay = args[++i]; break;
             case "--errors": errors = args[++i]; break;
+            case "--fuzz-casts": casts = long.Parse(args[++i]); break;
+            case "--casts-start": castsStart = long.Parse(args[++i]); break;
+            case "--fuzz-casts-replay": castReplay = args[++i]; break;
             case "--help":
                 Console.WriteLine("accuracy [--cases N (per family parameter, default 20)] [--seed S] [--family NAME (one family only)] [--out docs/accuracy.md]");
                 Console.WriteLine("accuracy --fuzz N [--seed S] [--start I] [--threads T] [--repros R] [--out FILE]   differential fuzz of N cases");
                 Console.WriteLine("         [--fuzz-new M] [--start-new J]   and M cases (default N) of issue 12's pairs, indices 1000000000000 + J …");
                 Console.WriteLine("         [--errors FILE]   also write the measured E per pair (against the exact reference) as a Markdown page");
                 Console.WriteLine("accuracy --fuzz-replay SEED:INDEX                                                 one fuzz case, every check, repros");
+                Console.WriteLine("accuracy --fuzz-casts N [--casts-start I] [--seed S] [--threads T] [--repros R] [--out FILE] [--errors FILE]");
+                Console.WriteLine("         the ray-cast fuzz: N casts (own index space) against the exact first hit; with --fuzz/--fuzz-new too, both run");
+                Console.WriteLine("         and --errors writes both sections");
+                Console.WriteLine("accuracy --fuzz-casts-replay SEED:INDEX                                           one ray-cast case, every check, repros");
                 return 0;
             default:
                 Console.Error.WriteLine($"unknown option '{args[i]}' (try --help)");
@@ -52,10 +61,23 @@ catch (Exception e) when (e is FormatException || e is OverflowException || e is
     return 2;
 }
 if (fuzzNew < 0) fuzzNew = fuzz;
-if (fuzz < 0 || start < 0 || startNew < 0 || threads < 1 || repros < 0)
+if (fuzz < 0 || start < 0 || startNew < 0 || casts < 0 || castsStart < 0 || threads < 1 || repros < 0)
 {
-    Console.Error.WriteLine("--fuzz, --fuzz-new, --start, --start-new and --repros must not be negative and --threads must be at least 1 (try --help)");
+    Console.Error.WriteLine("--fuzz, --fuzz-new, --fuzz-casts, --start, --start-new, --casts-start and --repros must not be negative and --threads must be at least 1 (try --help)");
     return 2;
+}
+
+if (castReplay != null)
+{
+    var parts = castReplay.Split(':');
+    if (parts.Length != 2 || !long.TryParse(parts[0], out long rs) || !long.TryParse(parts[1], out long ri) || ri < 0)
+    {
+        Console.Error.WriteLine($"--fuzz-casts-replay needs SEED:INDEX (got '{castReplay}')");
+        return 2;
+    }
+    try { Console.Write(CastEngine.Replay(rs, ri)); }
+    catch (Exception e) { Console.Error.WriteLine($"error: ray-cast case {rs}:{ri} could not be checked: {e.Message}"); return 2; }
+    return 0;
 }
 
 if (replay != null)
@@ -71,45 +93,97 @@ if (replay != null)
     return 0;
 }
 
-if (fuzz > 0 || fuzzNew > 0)
+if (fuzz > 0 || fuzzNew > 0 || casts > 0)
 {
-    Console.Error.WriteLine($"fuzz: {fuzz} cases from {start} and {fuzzNew} of issue 12's pairs from {FuzzCase.NewBase + startNew}, seed {seed}, {threads} threads");
-    FuzzReport report;
+    FuzzReport? report = null;
+    CastReport? castReport = null;
     try
     {
-        report = Engine.Run(new FuzzOptions
+        if (fuzz > 0 || fuzzNew > 0)
         {
-            Seed = seed, Start = start, Count = fuzz, NewStart = startNew, NewCount = fuzzNew, Threads = threads,
-            Progress = line => Console.Error.WriteLine("  " + line),
-        });
+            Console.Error.WriteLine($"fuzz: {fuzz} cases from {start} and {fuzzNew} of issue 12's pairs from {FuzzCase.NewBase + startNew}, seed {seed}, {threads} threads");
+            report = Engine.Run(new FuzzOptions
+            {
+                Seed = seed, Start = start, Count = fuzz, NewStart = startNew, NewCount = fuzzNew, Threads = threads,
+                Progress = line => Console.Error.WriteLine("  " + line),
+            });
+        }
+        if (casts > 0)
+        {
+            Console.Error.WriteLine($"ray-cast fuzz: {casts} casts from {castsStart}, seed {seed}, {threads} threads");
+            castReport = CastEngine.Run(new CastFuzzOptions
+            {
+                Seed = seed, Start = castsStart, Count = casts, Threads = threads,
+                Progress = line => Console.Error.WriteLine("  " + line),
+            });
+        }
     }
     catch (AggregateException e)
     {
         Console.Error.WriteLine($"error: the fuzz engine failed: {e.InnerException?.Message ?? e.Message}");
         return 2;
     }
-    string text = report.Format(repros);
+    string text = (report?.Format(repros) ?? "") + (report != null && castReport != null ? Environment.NewLine : "") + (castReport?.Format(repros) ?? "");
     if (output != null) File.WriteAllText(output, text);
     if (errors != null)
     {
+        var command = new StringBuilder("dotnet run --project tests/ProximityLib.Accuracy -c Release --");
+        if (report != null) command.Append($" --fuzz {fuzz} --fuzz-new {fuzzNew}");
+        if (castReport != null) command.Append($" --fuzz-casts {casts}{(castsStart > 0 ? $" --casts-start {castsStart}" : "")}");
+        command.Append($" --seed {seed} --errors {errors}");
         var page = new StringBuilder();
         page.AppendLine("# Measured error of every pair in the fuzz");
         page.AppendLine();
-        page.AppendLine($"Generated by `dotnet run --project tests/ProximityLib.Accuracy -c Release -- --fuzz {fuzz} --fuzz-new {fuzzNew} --seed {seed} --errors {errors}`; do not edit by hand.");
+        page.AppendLine($"Generated by `{command}`; do not edit by hand.");
         page.AppendLine();
-        page.AppendLine("The differential fuzz (tests/ProximityLib.Reference/Fuzz: seeded generators aimed at degeneracies, every public");
-        page.AppendLine("overload in both argument orders) checks a sample of its cases against the exact rational reference. E is the");
-        page.AppendLine("error of Distance in units of U = u·S + η (docs/accuracy.md; S the configuration's local scale), the largest over");
-        page.AppendLine("both argument orders; the bound is the promise the fuzz enforces (32 for issue 12's pairs in double unless stated");
-        page.AppendLine("less, 2 for the float API). Replay a worst case with `--fuzz-replay SEED:INDEX`.");
-        page.AppendLine();
-        page.AppendLine($"{report.ExactCases} of {report.Cases} cases against the exact reference; {report.FailureCount} invariant violations.");
-        page.AppendLine();
-        page.Append(report.FormatErrors());
+        if (report != null)
+        {
+            page.AppendLine("The differential fuzz (tests/ProximityLib.Reference/Fuzz: seeded generators aimed at degeneracies, every public");
+            page.AppendLine("overload in both argument orders) checks a sample of its cases against the exact rational reference. E is the");
+            page.AppendLine("error of Distance in units of U = u·S + η (docs/accuracy.md; S the configuration's local scale), the largest over");
+            page.AppendLine("both argument orders; the bound is the promise the fuzz enforces (32 for issue 12's pairs in double unless stated");
+            page.AppendLine("less, 2 for the float API). Replay a worst case with `--fuzz-replay SEED:INDEX`.");
+            page.AppendLine();
+            page.AppendLine($"{report.ExactCases} of {report.Cases} cases against the exact reference; {report.FailureCount} invariant violations.");
+            page.AppendLine();
+            page.Append(report.FormatErrors());
+        }
+        if (castReport != null)
+        {
+            if (report != null) page.AppendLine();
+            page.AppendLine("## Ray casts");
+            page.AppendLine();
+            page.AppendLine("The ray-cast fuzz (tests/ProximityLib.Reference/Fuzz/Raycast*.cs: every public `Raycast.Cast` overload, 2D and 3D,");
+            page.AppendLine("double and float, with and without maxDistance, and the batch `BatchQuery.Raycasts`) checks every cast against the");
+            page.AppendLine("exact first hit (dyadic arithmetic; a ball's or capsule's root compared on squares). The first-hit check is");
+            page.AppendLine("backward-stable: T must be the exact first hit of the target grown or shrunk by at most B·U, with U = u·S + η");
+            page.AppendLine("(S: the largest coordinate difference between the ray's origin and the target's defining points, its radius, or");
+            page.AppendLine("the exact hit's distance when larger), plus T's own rounding 2u·T; at a graze that is one-sided. E = |T − t\\*|/U is");
+            page.AppendLine("measured on well-conditioned hits only (the grown and shrunk targets' first hits within 4·B·U, i.e. an incidence");
+            page.AppendLine("cosine ≥ 1/2), where the check implies E ≤ 2·B + 4. The batch row casts with the direction rounded to float, as");
+            page.AppendLine("the batch does. Zero-thickness 3D targets are hit within `PassThroughTolerance` (2^−40 of the local scale) of the");
+            page.AppendLine("documented candidates; their E is measured against the first such candidate. Replay a case with");
+            page.AppendLine("`--fuzz-casts-replay SEED:INDEX`.");
+            page.AppendLine();
+            page.AppendLine($"{castReport.Cases} casts; {castReport.WorstE.Values.Sum(v => v.Count)} well-conditioned hits measured; {castReport.FailureCount} invariant violations.");
+            if (castReport.Known.Count > 0)
+            {
+                page.AppendLine();
+                page.AppendLine("Known library issues, reported and not failed (`CastChecker.KnownIssues`; replay the first case of each):");
+                page.AppendLine();
+                foreach (var g in castReport.Known.GroupBy(kv => kv.Key.Issue).OrderBy(g => g.Key, StringComparer.Ordinal))
+                {
+                    var first = g.Select(kv => kv.Value.First).OrderBy(f => f.Case.Index).First();
+                    page.AppendLine($"- {g.Key}: {g.Sum(kv => kv.Value.Count)} casts (first {first.Case.Seed}:{first.Case.Index}).");
+                }
+            }
+            page.AppendLine();
+            page.Append(castReport.FormatErrors());
+        }
         File.WriteAllText(errors, page.ToString());
     }
     Console.Write(text);
-    return report.Failures.Count == 0 ? 0 : 1;
+    return (report?.Failures.Count ?? 0) + (castReport?.Failures.Count ?? 0) == 0 ? 0 : 1;
 }
 
 var all = new List<Measurement>();

@@ -8,14 +8,14 @@ namespace ProximityLib.Double
 {
     public static partial class Raycast
     {
-        /// <summary>First hit of a ray on a line (3D): zero thickness, so hit when the ray passes through it, within <see cref="PassThroughTolerance"/> of the larger of |line.Origin − Origin| and the crossing's offset from Origin (largest coordinate): the origin on the line (T = 0), else the crossing point; Point on the line, Normal −Direction; a parallel ray misses unless its origin lies on the line. Algorithm: the origin's residual from the line, and the lines' closest approach from cross products (Lagrange's identity). A hit farther than maxDistance is a miss; a negative or NaN maxDistance throws System.ArgumentException.</summary>
+        /// <summary>First hit of a ray on a line (3D): zero thickness, so hit when the ray passes through it, within <see cref="PassThroughTolerance"/> of the larger of |line.Origin − Origin| and the crossing's offset from Origin (largest coordinate): the origin on the line (T = 0), else the crossing point; Point on the line, Normal −Direction; a parallel ray (to rounding: |Direction × line.Direction| below 2^-45, where the crossing's place is rounding) misses unless its origin lies on the line. Algorithm: the origin's residual from the line, and the lines' closest approach from cross products (Lagrange's identity). A hit farther than maxDistance is a miss; a negative or NaN maxDistance throws System.ArgumentException.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static RayHit3 Cast(Ray3 ray, Line3 shape, double maxDistance = double.PositiveInfinity)
         {
             var hit = Core(ray, shape, out bool inRange);
             return RayHit3.Within(inRange ? hit : Slow(ray, shape), maxDistance);
         }
-        /// <summary>First hit of a ray on a line (2D): the line is a wall the ray crosses; Normal is its normal on the side the ray comes from; a ray on the line hits at T = 0 with Normal −Direction, a parallel one misses. Algorithm: T = ((line.Origin − Origin) × e) / (Direction × e). A hit farther than maxDistance is a miss; a negative or NaN maxDistance throws System.ArgumentException.</summary>
+        /// <summary>First hit of a ray on a line (2D): the line is a wall the ray crosses; Normal is its normal on the side the ray comes from; a ray on the line hits at T = 0 with Normal −Direction, a parallel one misses. Algorithm: T = ((line.Origin − Origin) × e) / (Direction × e), Point the ray's point's foot on the line. A hit farther than maxDistance is a miss; a negative or NaN maxDistance throws System.ArgumentException.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static RayHit2 Cast(Ray2 ray, Line2 shape, double maxDistance = double.PositiveInfinity)
         {
@@ -34,7 +34,7 @@ namespace ProximityLib
 {
     public static partial class Raycast
     {
-        /// <summary>First hit of a ray on a line (3D), computed in double and rounded once: zero thickness, so hit when the ray passes through it, within <see cref="PassThroughTolerance"/> of the larger of |line.Origin − Origin| and the crossing's offset from Origin (largest coordinate): the origin on the line (T = 0), else the crossing point; Point on the line, Normal −Direction; a parallel ray misses unless its origin lies on the line. A hit farther than maxDistance is a miss; a negative or NaN maxDistance throws System.ArgumentException.</summary>
+        /// <summary>First hit of a ray on a line (3D), computed in double and rounded once: zero thickness, so hit when the ray passes through it, within <see cref="PassThroughTolerance"/> of the larger of |line.Origin − Origin| and the crossing's offset from Origin (largest coordinate): the origin on the line (T = 0), else the crossing point; Point on the line, Normal −Direction; a parallel ray (to rounding: |Direction × line.Direction| below 2^-45, where the crossing's place is rounding) misses unless its origin lies on the line. A hit farther than maxDistance is a miss; a negative or NaN maxDistance throws System.ArgumentException.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static RayHit3 Cast(Ray3 ray, Line3 shape, float maxDistance = float.PositiveInfinity) => new RayHit3(Dbl.Raycast.Cast(ray.Inner, shape.Inner, maxDistance));
         /// <summary>First hit of a ray on a line (2D), computed in double and rounded once: the line is a wall the ray crosses; Normal is its normal on the side the ray comes from; a ray on the line hits at T = 0 with Normal −Direction, a parallel one misses. A hit farther than maxDistance is a miss; a negative or NaN maxDistance throws System.ArgumentException.</summary>

@@ -292,7 +292,7 @@ namespace ProximitySpeed
                     .Select(k => m.Time(Mode.NoPgo, k)!.Value.Median / m.Time(Mode.Pgo, k)!.Value.Median).ToList();
                 if (r.Count > 0) yield return $"- Without PGO the library's casts take {Range(r)} of their default time.";
             }
-            yield return "- Max E of T: the ray-cast fuzz against the exact first hit ([accuracy-fuzz.md](accuracy-fuzz.md), ray-cast section), " +
+            yield return "- Max E of T: the ray-cast fuzz against the exact first hit ([accuracy-fuzz.md](accuracy-fuzz.md#ray-casts)), " +
                          "E = |T − t*| / (u·S) over the well-conditioned hits it measured (a grazing hit's T is not well conditioned; there the " +
                          "fuzz checks the first-hit interval instead). The baselines agree with the library within 1e-3·(1 + T) in float and " +
                          "1e-9·(1 + T) in double on every input pair; their own error is not measured.";

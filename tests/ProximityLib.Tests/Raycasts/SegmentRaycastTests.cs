@@ -65,6 +65,34 @@ namespace ProximityTests.Raycasts
             Assert.That(hf.Hit && hf.T == 3f && hf.Point == new System.Numerics.Vector3(3, 0, 0), hf.ToString());
         }
 
+        /// <summary>
+        /// A ray parallel to a 3D line or ray target to rounding (|e × d| below 2^−45) and off it is a miss: the closest
+        /// approach's place is rounding there, and with it the local scale that sizes the pass-through tolerance. The ray-cast
+        /// fuzz found both (seed 12: 12:742522, 12:186123): the rounded approach lay so far along that the tolerance grew
+        /// past 3.5 (then 14), and the origin, that far from the target, counted as on it (T = 0, Point 3.5 and 14 away).
+        /// </summary>
+        [Test]
+        public void NearlyParallelLinearTargetsAreNotHitFromAfar()
+        {
+            Miss(Raycast.Cast(new Ray3(V(-26.485281374238596, 18.485281374238568, -5.999999999999973), V(0.7071067811865497, -0.7071067811865475, -2.2181228206647693E-15)),
+                new Line3(V(-12, 0, -8), V(1, -1, 0))));
+            Miss(Raycast.Cast(new Ray3(V(8.000000000000005, 59.31370849898477, 20.68629150101524), V(-3.2425516965182574E-16, -0.7071067811865478, 0.7071067811865475)),
+                new Ray3(V(16, 40, 24), V(0, 0.125, -0.125))));
+        }
+
+        /// <summary>
+        /// A 2D segment whose end lies a subnormal off the ray's line: T is the crossing's distance along the ray, with the
+        /// point. The ray-cast fuzz found it (seed 13: 13:335771): T = (gp·fq − gq·fp)/(fq − fp) with fq = 5e-324 rounded to 3,
+        /// the point at the other end, 2.83 along the ray.
+        /// </summary>
+        [Test]
+        public void SubnormalSideValuesKeepTheCrossingOnTheRay()
+        {
+            var ray = new Ray2(V(-5E-324, 14), V(1, -1));
+            var h = Raycast.Cast(ray, new Segment2(V(2, 12), V(0, 14)));
+            Assert.That(!h.Hit || (ray.PointAt(h.T) - h.Point).Length < 1e-14, h.ToString());
+        }
+
         [Test]
         public void Segments2DAreWalls()
         {

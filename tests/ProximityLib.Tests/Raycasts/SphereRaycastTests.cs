@@ -41,6 +41,15 @@ namespace ProximityTests.Raycasts
             Miss(Raycast.Cast(R(V(0, 0, 0), V(1, 0, 0)), new Sphere(V(3, 1e-15, 0), 0)));
         }
 
+        /// <summary>
+        /// A zero-radius sphere hit at T &gt; 0 has the normal −Direction, not the direction of the rounding residue of its
+        /// hit point's offset from the centre (+Direction here: −0.1 + 0.01/0.1 rounds to +1.4e-17). The ray-cast fuzz found
+        /// the capsule analogue (seed 1: 1:885, a zero-radius capsule's end).
+        /// </summary>
+        [Test]
+        public void ZeroRadiusSphereFacesTheRay() =>
+            IsHit(Raycast.Cast(R(V(-0.1, 0, 0), V(1, 0, 0)), new Sphere(V(0, 0, 0), 0)), 0.10000000000000002, V(0, 0, 0), V(-1, 0, 0));
+
         [Test]
         public void MaxDistanceCutsAndIsValidated()
         {

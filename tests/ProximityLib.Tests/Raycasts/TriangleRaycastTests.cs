@@ -43,6 +43,29 @@ namespace ProximityTests.Raycasts
             Miss(Raycast.Cast(new Ray3(V(-2, 1, 1), V(1, 0, 0)), Tri)); // parallel, above
         }
 
+        /// <summary>
+        /// A sheared determinant at rounding level (the ray in the triangle's plane, or the triangle degenerate, to rounding)
+        /// is answered edge-on. The ray-cast fuzz found these (seed 2: 2:31166, 2:98926, 2:29006): an exactly collinear
+        /// triangle missed by a ray through its end (the determinant rounded to 1e-15, not 0, so it was not the segment it
+        /// is); a ray exactly in the triangle's plane missed it (its rounded direction left the determinant a few ulps off
+        /// 0); a sliver thinner than rounding hit at its vertex C with T = 0.58, the ray 0.25 away from it, its origin on the
+        /// sliver (T must be 0).
+        /// </summary>
+        [Test]
+        public void DeterminantsAtRoundingLevelAreAnsweredEdgeOn()
+        {
+            var ray = new Ray3(V(-12, 32, 20), V(1.815436689867056E-12, -24.00000000000299, 3.8546943414985435E-12));
+            IsHit(Raycast.Cast(ray, new Triangle3(V(-12, 8, 20), V(-8, 12, 24), V(0, 20, 32))), 24, V(-12, 8, 20), -ray.Direction, 1e-9);
+            var inPlane = new Ray3(V(0.875, -0.375, 0), V(-0.5, -1.5, -1));
+            var h = Raycast.Cast(inPlane, new Triangle3(V(0.25, -1.25, -0.75), V(1.25, -0.25, 0.25), V(0.75, -1.75, -0.75)));
+            IsHit(h, 0.46770717334674267, inPlane.PointAt(0.46770717334674267), -inPlane.Direction, 1e-12);
+            var o = V(-0.13092266339168684, -0.028721552554482402, 0.40968145601602746);
+            var sliver = new Triangle3(V(0.08193629120320549, -0.08193629120320549, 0.40968145601602746), V(-0.24580887360961645, 0.0, 0.40968145601602746),
+                V(0.40968145601602746, -0.16387258240641098, 0.40968145601602746));
+            var hs = Raycast.Cast(new Ray3(o, V(0.9280567846820718, -0.025480095895527733, -0.3715661032962097)), sliver);
+            Assert.That(hs.Hit && hs.T == 0 && (hs.Point - o).Length < 1e-15, hs.ToString());
+        }
+
         [Test]
         public void DegenerateTrianglesAreSegmentsAndPoints()
         {
@@ -112,6 +135,40 @@ namespace ProximityTests.Raycasts
             }
             var flat = new Triangle2(V(0, 0), V(2, 0), V(4, 0));
             IsHit(Raycast.Cast(new Ray2(V(1, -3), V(0, 1)), flat), 3, V(1, 0), V(0, -1));
+        }
+
+        /// <summary>
+        /// A ray nearly along a 2D target ray whose exact lines do not cross on the target (the exact reference: a miss) is a
+        /// miss; a hit's Point is the foot of the ray's point at T on the target. The ray-cast fuzz found both (seeds 1 and 2:
+        /// 2:2533, 1:40133): T and the target's parameter were two independent ratios of rounding residues, a hit at
+        /// T = 0.4 (then 121) with Point the target's origin 0.087 (then 8.9) off the ray.
+        /// </summary>
+        [Test]
+        public void NearlyCollinearRayTargetsAreAnsweredConsistently()
+        {
+            Miss(Raycast.Cast(new Ray2(V(-0.09152913087920383, -0.533470869120796), V(-0.7071067811865477, 0.7071067811865472)),
+                new Ray2(V(-0.3125, -0.3125), V(0.125, -0.125))));
+            Miss(Raycast.Cast(new Ray2(V(-31.19595949289331, 127.19595949289348), V(0.7071067811865475, -0.7071067811865489)),
+                new Ray2(V(48, 48), V(-0.5, 0.5))));
+            // An origin exactly on the target stays a hit at T = 0 at the origin (T's cross product is exactly 0 there).
+            var o = V(0.75, 1.125);
+            var h = Raycast.Cast(new Ray2(o, V(0.3, -0.7)), new Ray2(V(0.25, 0.375), V(2, 3)));
+            IsHit(h, 0, o, h.Normal, 4e-16);
+            Assert.That(Math.Abs(Vector2D.Dot(h.Normal, V(2, 3))), Is.LessThan(1e-15), h.ToString());
+        }
+
+        /// <summary>
+        /// A 2D sliver (vertices collinear to within rounding, not exactly) is not hit far outside its extent. The ray-cast
+        /// fuzz found both (seed 1: 1:18816, 1:12256): the three edge lines are parallel to rounding, so their side functions
+        /// and clip times were noise, and the ray "entered" where it crosses their common line 0.14 (then 0.55) past a vertex.
+        /// </summary>
+        [Test]
+        public void SliversAreNotHitPastTheirEnds()
+        {
+            Miss(Raycast.Cast(new Ray2(V(1.3199949333407384, 0.027149102904490574), V(-2.3446308686132618, 2.355939055210831)),
+                new Triangle2(V(-0.8620730471871697, 2.071327714879632), V(-0.892816283460102, 1.6367649476768749), V(-0.8854369098851366, 1.7410741027863283))));
+            Miss(Raycast.Cast(new Ray2(V(134405031.63244772, 479547026.0470764), V(-134405030.6364852, -479547026.03155553)),
+                new Triangle2(V(0.5317434576490848, 0.4320067275139301), V(0.6579735290872939, -0.320382420517933), V(0.4826941733537411, 0.7243629687968264))));
         }
     }
 }

@@ -14,6 +14,12 @@ namespace ProximityLib.Double
         /// <summary>2^-40: a point or segment (3D) is hit when the ray passes within this much of the local scale of it.</summary>
         public const double PassThrough = 9.094947017729282e-13;
 
+        /// <summary>2^-90: |e × d|² of two unit directions below this is rounding: they are parallel (see <see cref="RayLinear"/>).</summary>
+        private const double ParallelNoise = 8.077935669463161e-28;
+
+        /// <summary>2^-46: a ray–triangle determinant below this times m and its sheared coordinates' sum is rounding (see <see cref="RayTriangle"/>).</summary>
+        private const double DetNoise = 1.4210854715202004e-14;
+
         /// <summary>
         /// Ray against a closed ball. The perpendicular distance h of the center from the line gives the half-chord
         /// √((r − h)(r + h)) without the cancellation of b² − c, and the entry is (|w|² − r²)/(−b + half-chord), the
@@ -24,14 +30,19 @@ namespace ProximityLib.Double
             var w = o - center;
             inRange = Range.Box(Math.Max(Range.MaxAbs(w), r));
             double wl = w.Length;
-            if (wl <= r) return wl < r ? RayHit3.Inside(o) : new RayHit3(0, o, Unit(w, -d), false);
+            // On the surface; a zero radius (w zero, or so small its length underflows) has only −Direction (docs).
+            if (wl <= r) return wl < r ? RayHit3.Inside(o) : new RayHit3(0, o, r == 0 ? -d : Unit(w, -d), false);
             double b = Vector3D.Dot(w, d);
             if (!(b < 0)) return RayHit3.Miss; // outside and not approaching the center: never enters a ball
-            double h = (w - d * b).Length;
+            var across = w - d * b; // the centre's offset across the ray, length h
+            double h = across.Length;
             if (!(h <= r)) return RayHit3.Miss;
             double t = (wl - r) * (wl + r) / (Math.Sqrt((r - h) * (r + h)) - b);
-            // The point from the center and the normal: on the surface to rounding at the sphere's scale, however far the origin.
-            var n = Unit(w + d * t, -d);
+            // The hit's offset from the centre, w + d·t = across + d·(b + t): its part along the ray is −half-chord at an
+            // entry, so a positive b + t is rounding (all there is at a zero radius) and is clamped to 0: the normal never
+            // points along the ray, and every term scales by 2^k exactly. The point from the centre is on the surface to
+            // rounding at the sphere's scale, however far the origin.
+            var n = Unit(across + d * Math.Min(b + t, 0), -d);
             return new RayHit3(t, center + n * r, n, false);
         }
 
@@ -47,7 +58,7 @@ namespace ProximityLib.Double
             inRange = Range.Box(Math.Max(Math.Max(Range.MaxAbs(w), Range.MaxAbs(e)), r));
             var res = PointSegmentResidual(o, a, b, out _, out double ee);
             double rl = res.Length;
-            if (rl <= r) return rl < r ? RayHit3.Inside(o) : new RayHit3(0, o, Unit(res, -d), false);
+            if (rl <= r) return rl < r ? RayHit3.Inside(o) : new RayHit3(0, o, r == 0 ? -d : Unit(res, -d), false);
             var best = RaySphere(o, d, a, r, out _);
             var other = RaySphere(o, d, b, r, out _);
             if (other.T < best.T) best = other;
@@ -60,16 +71,34 @@ namespace ProximityLib.Double
                 double aa = dn.LengthSquared, bq = Vector3D.Dot(wn, dn), wl = wn.Length;
                 if (aa > 0 && bq < 0 && wl > r)
                 {
-                    double h = (wn - dn * (bq / aa)).Length;
+                    double q = bq / aa;
+                    var across = wn - dn * q;
+                    double h = across.Length;
                     if (h <= r)
                     {
                         double t = (wl - r) * (wl + r) / (Math.Sqrt(aa) * Math.Sqrt((r - h) * (r + h)) - bq);
                         double u = wp + dp * t;
                         if (u >= 0 && u <= 1 && t < best.T)
                         {
-                            var n = Unit(wn + dn * t, -d);
+                            // As for the ball, in the plane across the axis: wn + dn·t = across + dn·(q + t), q + t ≤ 0.
+                            var n = Unit(across + dn * Math.Min(q + t, 0), -d);
                             best = new RayHit3(t, SegmentPoint(a, b, u) + n * r, n, false);
                         }
+                    }
+                }
+                if (r == 0 && best.Hit)
+                {
+                    // A zero radius is the segment: any normal across it is outward at an interior point, so take the one
+                    // facing the ray (in the outward cone at an end too). A ray along the axis that meets an end exactly
+                    // runs along the segment: an origin between the ends is on it (its residual was rounding), else it
+                    // meets the near end first (whose own offset across the ray may have rounded away from 0).
+                    if (aa > 0) best = new RayHit3(best.T, best.Point, Unit(-dn, -d), false);
+                    else if (wp >= 0 && wp <= 1) best = new RayHit3(0, o, -d, false);
+                    else if (wp < 0 == dp > 0)
+                    {
+                        var near = dp > 0 ? a : b;
+                        double tn = Vector3D.Dot(near - o, d);
+                        if (tn >= 0 && tn < best.T) best = new RayHit3(tn, near, -d, false);
                     }
                 }
             }
@@ -205,18 +234,19 @@ namespace ProximityLib.Double
         /// direction): hit when the ray passes within <see cref="PassThrough"/> of the local scale (the larger of |p − o|
         /// and the closest approach's offset from o, largest coordinate) of it. The earliest of: the origin on the target
         /// (T = 0), the lines' closest approach (the target's parameter from cross products, as in
-        /// <see cref="RaySegment"/>) when it lies on the target, else a target ray's origin on the ray. Parallel: only the
-        /// origin on the target, or a target ray's origin ahead on the ray.
+        /// <see cref="RaySegment"/>) when it lies on the target, else a target ray's origin on the ray. Parallel (to
+        /// rounding: |e × d| below 2^-45): only the origin on the target, or a target ray's origin ahead on the ray.
         /// </summary>
         public static RayHit3 RayLinear(Vector3D o, Vector3D d, Vector3D p, Vector3D e, bool targetRay, out bool inRange)
         {
             var w = p - o;
             double m = Range.MaxAbs(w);
-            // The target's parameter at the closest approach; e and d are unit, so |e × d|² neither over- nor underflows
-            // unless they are parallel to rounding (then the approach is at infinity or everywhere).
+            // The target's parameter at the closest approach; e and d are unit, so |e × d|² neither over- nor underflows.
+            // Each of its components is within about 5u of exact: below 2^−45 the lines are parallel to rounding, and the
+            // approach's place (hence the local scale m and the tolerance) would be that rounding magnified.
             var ed = Vector3D.Cross(e, d);
             double den = ed.LengthSquared, s = 0;
-            bool skew = den > 0;
+            bool skew = den > ParallelNoise;
             if (skew)
             {
                 s = -Vector3D.Dot(Vector3D.Cross(w, d), ed) / den;
@@ -239,8 +269,9 @@ namespace ProximityLib.Double
         /// Ray against a two-sided triangle, watertight (Woop, Benthin and Wald, "Watertight Ray/Triangle Intersection",
         /// JCGT 2013): the vertices relative to the origin are sheared so the ray runs along the dominant axis, and the
         /// edge functions are 2D cross products of per-vertex values, so a shared edge gives both triangles the same value
-        /// of opposite sign: a ray through it hits at least one. A zero determinant (the ray parallel to the plane, or a
-        /// degenerate triangle) answers the triangle as the segments it is seen as (<see cref="RayEdgeOn"/>).
+        /// of opposite sign: a ray through it hits at least one. A determinant at rounding level (the ray parallel to the
+        /// plane, or the triangle degenerate, to rounding) answers the triangle as the segments it is seen as
+        /// (<see cref="RayEdgeOn"/>).
         /// </summary>
         public static RayHit3 RayTriangle(Vector3D o, Vector3D d, Vector3D A, Vector3D B, Vector3D C, out bool inRange)
         {
@@ -259,12 +290,20 @@ namespace ProximityLib.Double
             double cx = Vec.Get(c, kx) - sx * cz, cy = Vec.Get(c, ky) - sy * cz;
             double U = cx * by - cy * bx, V = ax * cy - ay * cx, W = bx * ay - by * ax;
             double det = U + V + W;
-            if (det == 0) return RayEdgeOn(o, d, A, B, C, m);
+            // Each sheared coordinate is within 5u·m of its exact value, so det within about 70u·m times their sum: a det
+            // below 2^−46·m·that sum is rounding (the ray in the plane, or the triangle degenerate, to rounding), and its
+            // sign, U, V, W and t would be noise; the edge-on answer is the one within the pass-through tolerance.
+            double sheared = Math.Abs(ax) + Math.Abs(ay) + Math.Abs(bx) + Math.Abs(by) + Math.Abs(cx) + Math.Abs(cy);
+            if (!(Math.Abs(det) > DetNoise * m * sheared)) return RayEdgeOn(o, d, A, B, C, m);
             if ((U < 0 || V < 0 || W < 0) && (U > 0 || V > 0 || W > 0)) return RayHit3.Miss;
+            var e1 = B - A;
+            var e2 = C - A;
+            var N = Vector3D.Cross(e1, e2);
+            if (N == default) return RayEdgeOn(o, d, A, B, C, m); // degenerate after all: the segment or point it is
             double t = (U * az + V * bz + W * cz) / (det * dz);
             if (!(t >= 0)) return RayHit3.Miss;
-            var n = Unit(Vector3D.Cross(B - A, C - A), -d);
-            return new RayHit3(t + 0.0, A + (B - A) * (V / det) + (C - A) * (W / det), Vector3D.Dot(n, d) > 0 ? -n : n, false);
+            var n = Unit(N, -d);
+            return new RayHit3(t + 0.0, A + e1 * (V / det) + e2 * (W / det), Vector3D.Dot(n, d) > 0 ? -n : n, false);
         }
 
         /// <summary>
