@@ -104,6 +104,8 @@ namespace ProximityTests.Fuzz
         [TestCase(31, 1000000011386, TestName = "Sphere centred on a triangle's doubled vertex")]
         [TestCase(41, 1000000104629, TestName = "Stadium axis touching a doubled-vertex triangle, float")]
         [TestCase(41, 1000000121829, TestName = "Stadium axis touching a doubled-vertex triangle")]
+        [TestCase(41, 1000000017149, TestName = "Capsule axis along a triangle's edge, 2e-15 off it: push-out along the facet normal")]
+        [TestCase(43, 1000000109309, TestName = "Capsule axis along a flat triangle, 1e-16 off it: push-out along the common normal")]
         public void CasesTheNewPairFuzzFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = Checker.Run(FuzzCase.Create(seed, index), exact: true);

@@ -343,6 +343,18 @@ namespace ProximityLib.Double
         {
             dir = default;
             if (f.Flat) return 0;
+            double best = PrismPush(p0, p1, f, out dir);
+            return best < double.PositiveInfinity ? Math.Max(0, best) / f.K : 0;
+        }
+
+        /// <summary>
+        /// The least push (scaled by f.K, negative when the facet separates: minus its gap) over the facet normals of the
+        /// Minkowski prism of segment [p0, p1] and a non-flat triangle, and the unit direction that moves the segment
+        /// away along it; +∞ and zero when every axis is zero.
+        /// </summary>
+        private static double PrismPush(Vector3D p0, Vector3D p1, in TriFrame f, out Vector3D dir)
+        {
+            dir = default;
             var q0 = (p0 - f.A) * f.K;
             var q1 = (p1 - f.A) * f.K;
             // The segment × edge axes from the exact differences (rounded part and rest): the plain cross product of the
@@ -356,7 +368,7 @@ namespace ProximityLib.Double
             SegmentAxis(FacetAxis(d, dl, e, el), q0, q1, f, ref best, ref dir);
             ExactDiff(f.C, f.B, f.K, out e, out el);
             SegmentAxis(FacetAxis(d, dl, e, el), q0, q1, f, ref best, ref dir);
-            return best < double.PositiveInfinity ? Math.Max(0, best) / f.K : 0;
+            return best;
         }
 
         /// <summary>(x − y)·k exactly as a rounded part and the rest (Knuth's two-sum per component; k a power of two).</summary>
@@ -429,7 +441,10 @@ namespace ProximityLib.Double
             inRange = (Range.In(size2) | (a == b & a == c & a == p0 & a == p1)) & (g == 0 | Range.In(g));
             if (g > 0)
             {
-                return Inflated(Math.Sqrt(g), onSeg + o, onTri + o, Unit(onSeg - onTri, f.Flat ? FlatPushDirection(p1 - p0, f) : f.Unit), s, radius);
+                double dist = Math.Sqrt(g);
+                var away = dist * f.K < NearTouch ? NearTouchDirection(p0, p1, f, dist, s, onSeg, onTri)
+                    : Unit(onSeg - onTri, f.Flat ? FlatPushDirection(p1 - p0, f) : f.Unit);
+                return Inflated(dist, onSeg + o, onTri + o, away, s, radius);
             }
             double depth = SegmentTrianglePenetration(p0, p1, f, out var dir);
             if (dir == default) dir = f.Flat ? FlatPushDirection(p1 - p0, f) : f.Unit;
@@ -437,6 +452,68 @@ namespace ProximityLib.Double
             SegmentTriangle(p0 + push, p1 + push, f, out s, out onSeg, out onTri);
             return Inflated(-depth, onSeg - push + o, onTri + o, dir, s, radius);
         }
+
+        /// <summary>
+        /// The unit direction that moves segment [p0, p1] away from a triangle it nearly touches (scaled gap dist·K below
+        /// 2^-20). There the residual onSeg − onTri is mostly rounding: its direction turns by about u·S/dist, and pushing
+        /// a capsule out along a turned direction leaves radius·angle²/2 of overlap (an axis along an edge 2e-15 away:
+        /// 5e-8). So: when a facet of the Minkowski difference separates by nearly dist, the pair's normal is that facet's,
+        /// formed from exact differences (moving along any direction that separates by dist − δ loses at most δ). Else the
+        /// normal cone is wide and only the residual's parts along a feature the exact residual is perpendicular to (the
+        /// segment, at an interior point; a triangle edge, at an interior point of it) turn it out of the cone: removed.
+        /// </summary>
+        private static Vector3D NearTouchDirection(Vector3D p0, Vector3D p1, in TriFrame f, double dist, double s, Vector3D onSeg, Vector3D onTri)
+        {
+            double best = f.Flat ? FlatPush(p0, p1, f, out var facet) : PrismPush(p0, p1, f, out facet);
+            if (facet != default && -best >= dist * f.K - FacetSlack) return facet;
+            var r = onSeg - onTri;
+            var d = p1 - p0;
+            double dd = d.LengthSquared;
+            if (s > 0 && s < 1 && dd > 0) r -= d * (Vector3D.Dot(r, d) / dd);
+            double near2 = dist * dist * 9.094947017729282E-13; // (2^-20·dist)²
+            for (int i = 0; i < 3; i++)
+            {
+                f.Edge(i, out var v0, out var v1);
+                // onTri at the interior point of edge i nearest to onSeg (to 2^-20 of the gap): r is perpendicular to it.
+                var re = PointSegmentResidual(onSeg, v0, v1, out double t, out double ee);
+                if (t > 0 && t < 1 && ee > 0 && (r - re).LengthSquared <= near2)
+                {
+                    var e = v1 - v0;
+                    r -= e * (Vector3D.Dot(r, e) / ee);
+                }
+            }
+            return Unit(r, f.Flat ? FlatPushDirection(d, f) : f.Unit);
+        }
+
+        /// <summary>
+        /// <see cref="PrismPush"/> for a flat triangle (its longest edge, a segment): the axes normal to the Minkowski
+        /// difference of two segments, a parallelogram: the common normal d × e from exact differences, and its two
+        /// in-plane edge normals.
+        /// </summary>
+        private static double FlatPush(Vector3D p0, Vector3D p1, in TriFrame f, out Vector3D dir)
+        {
+            dir = default;
+            double l1 = f.E1.LengthSquared, l2 = f.E2.LengthSquared, l3 = f.E3.LengthSquared;
+            Vector3D x = f.B, y = f.A;
+            if (l2 > l1 && l2 >= l3) x = f.C;
+            else if (l3 > l1 && l3 > l2) { x = f.C; y = f.B; }
+            ExactDiff(p1, p0, f.K, out var d, out var dl);
+            ExactDiff(x, y, f.K, out var e, out var el);
+            var c = FacetAxis(d, dl, e, el);
+            var q0 = (p0 - f.A) * f.K;
+            var q1 = (p1 - f.A) * f.K;
+            double best = double.PositiveInfinity;
+            SegmentAxis(c, q0, q1, f, ref best, ref dir);
+            SegmentAxis(Vector3D.Cross(c, d), q0, q1, f, ref best, ref dir);
+            SegmentAxis(Vector3D.Cross(c, e), q0, q1, f, ref best, ref dir);
+            return best;
+        }
+
+        /// <summary>Scaled gaps below 2^-20 ask which facet separates (above it the residual's direction is within 2^-32).</summary>
+        private const double NearTouch = 9.5367431640625E-07;
+
+        /// <summary>2^-48 of the scaled size: a facet whose gap is this close to the distance is the pair's normal.</summary>
+        private const double FacetSlack = 3.552713678800501E-15;
 
         /// <summary>A unit direction perpendicular to the axis d and to the longest edge of a flat triangle (any perpendicular when they are parallel).</summary>
         private static Vector3D FlatPushDirection(Vector3D d, in TriFrame f)
