@@ -5,7 +5,7 @@ using Dbl = ProximityLib.Double;
 
 namespace ProximityLib
 {
-    /// <summary>The answer of a 3D ray cast (<see cref="Raycast"/>); the contract of <see cref="Dbl.RayHit3"/>, computed in double and rounded to float (T saturates at float.MaxValue).</summary>
+    /// <summary>The answer of a 3D ray cast (<see cref="Raycast"/>); the contract of <see cref="Dbl.RayHit3"/>, computed in double and rounded to float (a hit whose T or Point lies past float's range is a miss).</summary>
     [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
     public readonly struct RayHit3 : IEquatable<RayHit3>, IFormattable
     {
@@ -23,8 +23,11 @@ namespace ProximityLib
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal RayHit3(in Dbl.RayHit3 h)
         {
-            Hit = h.Hit; T = h.Hit ? (float)Math.Min(h.T, float.MaxValue) : float.PositiveInfinity;
-            Point = (Vector3)h.Point; Normal = (Vector3)h.Normal; StartsInside = h.StartsInside;
+            // A hit past float's range is a miss, as the double API's past double's range: no infinite T or Point.
+            var p = (Vector3)h.Point;
+            Hit = h.Hit && h.T <= float.MaxValue && float.IsFinite(p.X) && float.IsFinite(p.Y) && float.IsFinite(p.Z);
+            T = Hit ? (float)h.T : float.PositiveInfinity;
+            Point = Hit ? p : default; Normal = Hit ? (Vector3)h.Normal : default; StartsInside = Hit && h.StartsInside;
         }
 
         // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.
@@ -45,7 +48,7 @@ namespace ProximityLib
             $"RayHit3 {{ Hit = {Formatting.Of(Hit)}, T = {Formatting.Of(T, format, formatProvider)}, Point = {Formatting.Of(Point, format, formatProvider)}, Normal = {Formatting.Of(Normal, format, formatProvider)}, StartsInside = {Formatting.Of(StartsInside)} }}";
     }
 
-    /// <summary>The answer of a 2D ray cast (<see cref="Raycast"/>); the contract of <see cref="Dbl.RayHit3"/>, computed in double and rounded to float (T saturates at float.MaxValue).</summary>
+    /// <summary>The answer of a 2D ray cast (<see cref="Raycast"/>); the contract of <see cref="Dbl.RayHit3"/>, computed in double and rounded to float (a hit whose T or Point lies past float's range is a miss).</summary>
     [System.Diagnostics.DebuggerDisplay("{ToString(),nq}")]
     public readonly struct RayHit2 : IEquatable<RayHit2>, IFormattable
     {
@@ -63,8 +66,11 @@ namespace ProximityLib
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal RayHit2(in Dbl.RayHit2 h)
         {
-            Hit = h.Hit; T = h.Hit ? (float)Math.Min(h.T, float.MaxValue) : float.PositiveInfinity;
-            Point = (Vector2)h.Point; Normal = (Vector2)h.Normal; StartsInside = h.StartsInside;
+            // A hit past float's range is a miss, as the double API's past double's range: no infinite T or Point.
+            var p = (Vector2)h.Point;
+            Hit = h.Hit && h.T <= float.MaxValue && float.IsFinite(p.X) && float.IsFinite(p.Y);
+            T = Hit ? (float)h.T : float.PositiveInfinity;
+            Point = Hit ? p : default; Normal = Hit ? (Vector2)h.Normal : default; StartsInside = Hit && h.StartsInside;
         }
 
         // Printing and comparing (docs/api.md): invariant text with round-trip numbers by default, value equality.

@@ -472,7 +472,7 @@ namespace ProximityApiGen
                 }
                 sb.Append('\n');
             }
-            sb.Append($"## Ray casts ({casts.Count})\n\n`Raycast.Cast(ray, shape, maxDistance = ∞)`: the first hit within maxDistance.\n\n| target | contract and algorithm | file |\n| --- | --- | --- |\n");
+            sb.Append($"## Ray casts ({casts.Count})\n\n`Raycast.Cast(ray, shape, maxDistance = ∞)`: the first hit within maxDistance (a hit whose T or Point lies past the precision's range is a miss: in float past float's, though computed in double).\n\n| target | contract and algorithm | file |\n| --- | --- | --- |\n");
             foreach (var c in casts)
             {
                 string text = Markdown(c.Summary);

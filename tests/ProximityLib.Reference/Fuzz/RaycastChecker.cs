@@ -29,10 +29,13 @@ namespace ProximityReference.Fuzz
             _ => throw new InvalidOperationException(r?.GetType().Name),
         };
 
-        /// <summary>The float API's answer for a double answer: T rounded (saturating at float.MaxValue), Point and Normal rounded.</summary>
-        public HitRes RoundedToFloat() => Hit
-            ? new HitRes(true, (float)Math.Min(T, float.MaxValue), F(Point), F(Normal), Inside)
+        /// <summary>The float API's answer for a double answer: T, Point and Normal rounded; a hit past float's range is a miss.</summary>
+        public HitRes RoundedToFloat() => Hit && !PastFloat
+            ? new HitRes(true, (float)T, F(Point), F(Normal), Inside)
             : new HitRes(false, float.PositiveInfinity, default, default, false);
+
+        /// <summary>A hit whose T or Point lies past float's range (the float API answers it with a miss).</summary>
+        public bool PastFloat => Hit && (T > float.MaxValue || !F(Point).IsFinite);
 
         private static Vector3D F(Vector3D v) => new Vector3D((float)v.X, (float)v.Y, (float)v.Z);
 
@@ -154,14 +157,12 @@ namespace ProximityReference.Fuzz
             _fails.Add(new CastFailure(_c, invariant, message, code, batch, known));
 
         /// <summary>
-        /// Library issues the fuzz reports without failing (each with its first repro), until they are fixed: the float
-        /// API's Point past float's range (src/ProximityLib/RayHit.cs rounds the double point; T saturates, the point becomes
-        /// infinite), the batch's float triangle lanes, which decide a sliver or degenerate triangle by a determinant at
+        /// Library issues the fuzz reports without failing (each with its first repro), until they are fixed: the batch's
+        /// float triangle lanes, which decide a sliver or degenerate triangle by a determinant at
         /// rounding level (src/ProximityLib/Batch/Raycasts.cs), and a 3D sliver's T in double (<see cref="Sliver3D"/>).
         /// </summary>
-        public static readonly string[] KnownIssues = { FloatRange, BatchSliver, Sliver3D };
+        public static readonly string[] KnownIssues = { BatchSliver, Sliver3D };
 
-        public const string FloatRange = "float Point past float's range";
         public const string BatchSliver = "batch triangle lanes on a sliver";
         /// <summary>
         /// A 3D sliver (tilt factor F above 2^20: its area below 2^−20 of its size squared, at the hit) hit by a scalar cast:
@@ -265,13 +266,7 @@ namespace ProximityReference.Fuzz
             else
             {
                 if (!(h.T >= 0) || !double.IsFinite(h.T)) problems.Add($"a hit with T = {N(h.T)} (must be finite and ≥ 0)");
-                if (!h.Point.IsFinite)
-                {
-                    // The double API turns a hit whose point leaves the range into a miss; the float API rounds the double point.
-                    if (_float && CastDouble(_ray, _target, double.PositiveInfinity).Point.IsFinite)
-                        Fail("a float range", $"{call}: Point {Res.P(h.Point, true, _c.Dim)} is not finite (the double answer's point is past float's range; T saturates, the point does not)", code, known: FloatRange);
-                    else problems.Add("a hit with a non-finite Point");
-                }
+                if (!h.Point.IsFinite) problems.Add("a hit with a non-finite Point");
                 if (h.Inside)
                 {
                     if (!_core.IsSolid) problems.Add($"StartsInside on a {_c.Target.KindName}, which is not a solid");
@@ -306,7 +301,7 @@ namespace ProximityReference.Fuzz
 
         private void CheckFirstHit(HitRes h, List<string> code, Dy delta, string invariant)
         {
-            if (h.Hit && _float && h.T >= float.MaxValue) return; // saturated: the double answer is checked by (f)
+            if (!h.Hit && _float && CastDouble(_ray, _target, double.PositiveInfinity).PastFloat) return; // a miss by the float range: (f) checks it
             var problems = new List<string>();
             var t = h.Hit ? Dy.From(h.T) : Dy.Zero;
             _ref.CheckT(h.Hit, t, h.Inside, delta, Rho(h.Hit ? h.T : 0), problems);
@@ -316,7 +311,7 @@ namespace ProximityReference.Fuzz
 
         private void MeasureE(HitRes h)
         {
-            if (!h.Hit || h.Inside || (_float && h.T >= float.MaxValue)) return;
+            if (!h.Hit || h.Inside) return;
             var wc = _ref.WellConditioned(_delta);
             if (!wc.HasValue) return;
             Errors.Add((_c.PrecisionName, wc.Value.Error(Dy.From(h.T), _unit)));
@@ -326,7 +321,7 @@ namespace ProximityReference.Fuzz
 
         private void CheckPointAndNormal(HitRes h, List<string> code)
         {
-            if (!h.Hit || h.Inside || (_float && h.T >= float.MaxValue)) return;
+            if (!h.Hit || h.Inside) return;
             var p = DyVec.From(h.Point);
             var o = DyVec.From(_o);
             var d = DyVec.From(_d);
@@ -521,6 +516,8 @@ namespace ProximityReference.Fuzz
             code.Add($"// got h:  {Show(h)}");
             code.Add($"//     hs: {Show(h2)}");
             var diffs = new List<string>();
+            // In float, a hit the scaling moves past float's range is a miss (the double answer says so).
+            if (_float && h.Hit != h2.Hit && CastDouble(h.Hit ? rs.Build() : _ray, h.Hit ? ts.Build() : _target, double.PositiveInfinity).PastFloat) return;
             if (h.Hit != h2.Hit || h.Inside != h2.Inside) diffs.Add($"Hit/StartsInside {h2.Hit}/{h2.Inside} instead of {h.Hit}/{h.Inside}");
             else if (h.Hit)
             {
@@ -532,7 +529,7 @@ namespace ProximityReference.Fuzz
                     if (!Normal(x) || !Normal(want)) return;
                     if (!Spec.Bits(want, y)) diffs.Add($"{name}: {N(y)} instead of {N(want)}");
                 }
-                if (!(_float && (h.T >= float.MaxValue || h2.T >= float.MaxValue))) Same("T", h.T, h2.T);
+                Same("T", h.T, h2.T);
                 Same("Point.X", h.Point.X, h2.Point.X); Same("Point.Y", h.Point.Y, h2.Point.Y); Same("Point.Z", h.Point.Z, h2.Point.Z);
                 if (!Spec.Bits(h.Normal, h2.Normal)) diffs.Add($"Normal {Res.P(h2.Normal, _float, _c.Dim)} instead of {Res.P(h.Normal, _float, _c.Dim)}");
             }
@@ -609,12 +606,12 @@ namespace ProximityReference.Fuzz
             code.Add($"//     ht: {Show(h2)}");
             string what = $"translating the ray and the target by {Res.P(tv.Value, _float, _c.Dim)} (exact)";
             if (!CheckForm(h2, "Cast(rayt, targett)", code, _o + Flat(tv.Value))) return;
-            if (h2.Hit && _float && h2.T >= float.MaxValue) return;
+            if (!h2.Hit && _float && CastDouble(ray2, target2, double.PositiveInfinity).PastFloat) return;
             var problems = new List<string>();
             _ref.CheckT(h2.Hit, h2.Hit ? Dy.From(h2.T) : Dy.Zero, h2.Inside, _delta, Rho(h2.Hit ? h2.T : 0), problems);
             if (problems.Count > 0)
                 Fail("h translation", $"{what}: the translated answer fails the first-hit check: {string.Join("; ", problems)}\nreference: {_ref.Describe(_delta)}", code, known: SliverKnown());
-            else if (h.Hit && h2.Hit && !h.Inside && !h2.Inside && _ref.WellConditioned(_delta).HasValue && !(_float && h.T >= float.MaxValue))
+            else if (h.Hit && h2.Hit && !h.Inside && !h2.Inside && _ref.WellConditioned(_delta).HasValue)
             {
                 var diff = Dy.Abs(Dy.From(h2.T) - Dy.From(h.T));
                 var allowed = _delta * Dy.From(2) + Rho(h.T) + Rho(h2.T);

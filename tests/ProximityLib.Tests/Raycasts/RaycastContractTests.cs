@@ -95,6 +95,36 @@ namespace ProximityTests.Raycasts
             Sane(Raycast.Cast(new Ray2(V(-big, big), V(1, -1)), new Triangle2(V(big, -big), V(-big, -big), V(0, big))));
         }
 
+        [Test]
+        public void FloatHitsPastFloatRangeAreMisses()
+        {
+            // T past float's range, the point inside it: origin −3e38, box at 3e38 (T = 6e38).
+            var o = new System.Numerics.Vector3(-3e38f, 0, 0);
+            var dir = new System.Numerics.Vector3(1, 0, 0);
+            var lo = new System.Numerics.Vector3(3e38f, -1, -1);
+            var hi = new System.Numerics.Vector3(3.2e38f, 1, 1);
+            var d = Raycast.Cast(new Ray3(V(o.X, 0, 0), V(1, 0, 0)), new Aabb3(V(lo.X, -1, -1), V(hi.X, 1, 1)));
+            Assert.That(d.Hit && d.T > float.MaxValue, Is.True, $"the double API hits at T = {d.T:R}");
+            var f = ProximityLib.Raycast.Cast(new ProximityLib.Ray3(o, dir), new ProximityLib.Aabb3(lo, hi));
+            Assert.That(f.Hit, Is.False, f.ToString());
+            Assert.That(f.T, Is.EqualTo(float.PositiveInfinity));
+            Assert.That(f.Point, Is.EqualTo(System.Numerics.Vector3.Zero));
+            // The point past float's range (ray-cast fuzz 2:43913): two nearly parallel 2D rays meet at about 1e40.
+            var ro = new System.Numerics.Vector2(1.557653E+37f, -1.8201409E+37f);
+            var rd = new System.Numerics.Vector2(0.87450975f, -0.48500797f);
+            var to = new System.Numerics.Vector2(-4.3067526E+36f, 7.3409025E+36f);
+            var td = new System.Numerics.Vector2(0.014745111f, -0.008405173f);
+            var d2 = Raycast.Cast(new Ray2(V(ro.X, ro.Y), V(rd.X, rd.Y)), new Ray2(V(to.X, to.Y), V(td.X, td.Y)));
+            Assert.That(d2.Hit && Math.Max(Math.Abs(d2.Point.X), Math.Abs(d2.Point.Y)) > float.MaxValue, Is.True, $"the double API hits at {d2.Point}");
+            var f2 = ProximityLib.Raycast.Cast(new ProximityLib.Ray2(ro, rd), new ProximityLib.Ray2(to, td));
+            Assert.That(f2.Hit, Is.False, f2.ToString());
+            Assert.That(f2.Point, Is.EqualTo(System.Numerics.Vector2.Zero));
+            // Just inside the range: still a hit, T rounded.
+            var f3 = ProximityLib.Raycast.Cast(new ProximityLib.Ray3(new System.Numerics.Vector3(-1e38f, 0, 0), dir), new ProximityLib.Aabb3(new System.Numerics.Vector3(2e38f, -1, -1), hi));
+            Assert.That(f3.Hit, Is.True, f3.ToString());
+            Assert.That(f3.T, Is.EqualTo((float)(2e38f - (double)-1e38f)));
+        }
+
         // ---- exact rational references on dyadic inputs: hit flags outside a band, T within 32·u·S ----
 
         private static Rational Dot(RVec a, RVec b) => RVec.Dot(a, b);
