@@ -135,10 +135,44 @@ namespace ProximityTests.Batch
             Assert.That(t.Take(3), Is.EqualTo(new[] { 5f, 5f, float.PositiveInfinity })); // along a face, through an edge, parallel outside
             var tris = new TriangleSet(new[] { new F.Triangle3(new Vector3(0, -1, -1), new Vector3(0, 1, -1), new Vector3(0, 0, 1)), new F.Triangle3(new Vector3(0, 0, 0), new Vector3(0, 1, 0), new Vector3(0, 0, 1)), new F.Triangle3(new Vector3(1, 0, 0), new Vector3(2, 0, 0), new Vector3(3, 0, 0)) });
             BatchQuery.Raycasts(ray, tris, t.AsSpan(0, 3));
-            Assert.That(t.Take(3), Is.EqualTo(new[] { 5f, 5f, float.PositiveInfinity })); // through the face, through a vertex, degenerate
+            Assert.That(t.Take(3), Is.EqualTo(new[] { 5f, 5f, 6f })); // through the face, through a vertex, degenerate: the segment it is, met at x = 1
             Assert.That(() => BatchQuery.Raycasts(ray, spheres, t, -1), Throws.ArgumentException.With.Property("ParamName").EqualTo("maxDistance"));
             Assert.That(() => BatchQuery.Raycasts(ray, boxes, t, float.NaN), Throws.ArgumentException.With.Property("ParamName").EqualTo("maxDistance"));
             Assert.That(() => BatchQuery.Raycasts(ray, tris, new float[2]), Throws.ArgumentException.With.Property("ParamName").EqualTo("result"));
+        }
+
+        /// <summary>
+        /// Lanes whose determinant is rounding (a needle the ray passes 1e-7 from, fuzz 12:54466, where the float lane
+        /// gave T = 3.77 at a point 6e-6 off it; a collinear triangle; a triangle in the ray's plane) give the scalar
+        /// cast's T, bit for bit, among ordinary lanes.
+        /// </summary>
+        [Test]
+        public void IllConditionedLanesAreTheScalarCast()
+        {
+            var ray = new F.Ray3(new Vector3(-1.7267025f, 1.4057068f, -1.5268404f), new Vector3(2.4714317f, -2.0419598f, 1.9442941f));
+            var shapes = new[]
+            {
+                new F.Triangle3(new Vector3(0.508964f, -0.1677447f, 0.85423154f), new Vector3(1.0014403f, -1.1463846f, -0.058128674f), new Vector3(0.51231945f, -0.17441256f, 0.8480153f)),
+                new F.Triangle3(new Vector3(0, 0, 0), new Vector3(1, 1, 1), new Vector3(-1, 0, 0)),
+                new F.Triangle3(ray.Origin + ray.Direction, ray.Origin + ray.Direction * 3, ray.Origin + ray.Direction * 2 + new Vector3(1e-7f, 0, 0)),
+                new F.Triangle3(ray.Origin + ray.Direction * 2 + new Vector3(0, 1, -1), ray.Origin + ray.Direction * 2 + new Vector3(0, -1, -1), ray.Origin + ray.Direction * 2 + new Vector3(0, 0, 1)),
+            };
+            var tris = Enumerable.Range(0, 21).Select(i => shapes[i % shapes.Length]).ToArray();
+            foreach (bool vectorized in new[] { true, false })
+            {
+                var t = new float[tris.Length];
+                bool saved = Runner.Vectorized;
+                try { Runner.Vectorized = vectorized; BatchQuery.Raycasts(ray, new TriangleSet(tris), t); }
+                finally { Runner.Vectorized = saved; }
+                for (int i = 0; i < tris.Length; i++)
+                {
+                    var h = F.Raycast.Cast(ray, tris[i]);
+                    float want = h.Hit ? h.T : float.PositiveInfinity;
+                    if (i % shapes.Length == 3) Assert.That(h.Hit, $"the ordinary lane {i} is hit");
+                    else Assert.That(t[i], Is.EqualTo(want), $"vectorized {vectorized}, lane {i}: scalar cast {h}");
+                    if (i % shapes.Length == 3) Assert.That(Math.Abs(t[i] - h.T), Is.LessThanOrEqualTo(1e-5f * h.T), $"lane {i}");
+                }
+            }
         }
 
         [Test]

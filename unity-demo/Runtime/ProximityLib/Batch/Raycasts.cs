@@ -24,12 +24,13 @@ namespace ProximityLib.Batch
         /// <summary>
         /// Distance along the ray to its first hit on each triangle of b (two-sided, watertight in float: a ray through a
         /// shared edge hits at least one of its triangles), +∞ for a miss or a hit beyond <paramref name="maxDistance"/>. A
-        /// ray in a triangle's plane, or a degenerate triangle, counts as a miss here (the scalar
-        /// <see cref="Raycast"/> answers those edge-on). Throws <see cref="ArgumentException"/> when maxDistance is
-        /// negative or NaN.
+        /// lane the float test hits whose determinant is within 2^-10 of its terms' size (a degenerate or sliver triangle,
+        /// a ray in or nearly in the triangle's plane: its T would be rounding) is answered as the scalar
+        /// <see cref="Raycast"/> answers it, edge-on hits included. Throws <see cref="ArgumentException"/> when
+        /// maxDistance is negative or NaN.
         /// </summary>
         public static void Raycasts(Ray3 ray, TriangleSet b, Span<float> result, float maxDistance = float.PositiveInfinity) =>
-            Runner.Values(new RayTriangles(new RayLanes(ray, maxDistance), b), b.Count, result);
+            Runner.Values(new RayTriangles(new RayLanes(ray, maxDistance), ray, b), b.Count, result);
 
         /// <summary>The ray in float, broadcast, with the maximum distance.</summary>
         private readonly struct RayLanes
@@ -171,17 +172,25 @@ namespace ProximityLib.Batch
         /// <summary>
         /// Watertight ray–triangle (Woop, Benthin and Wald 2013) in float: the vertices relative to the origin, sheared
         /// so the ray runs along its dominant axis kz (the arrays are picked in that axis order once per call); edge
-        /// functions U, V, W of one sign (zeros included) and a non-zero determinant make a hit.
+        /// functions U, V, W of one sign (zeros included) make a hit. T is U, V, W's weighted mean of the vertices' depths
+        /// over the determinant U + V + W, so where that is near the rounding of its terms (a sliver, a ray nearly in the
+        /// plane) the weights are noise and T can land anywhere on the triangle's span along the ray (fuzz 12:54466:
+        /// 6e-6 off a needle, 38 U): those lanes, rare in a scene, go to the scalar cast.
         /// </summary>
         private struct RayTriangles : IKernel
         {
+            /// <summary>2^-10: a determinant at most this share of |U|'s, |V|'s and |W|'s products is ill-conditioned.</summary>
+            private const float Ill = 1f / 1024;
+
             private readonly RayLanes _r;
+            private readonly Ray3 _ray;
+            private readonly TriangleSet _set;
             private readonly float[] _ax, _ay, _az, _bx, _by, _bz, _cx, _cy, _cz;
             private readonly float _ox, _oy, _oz, _sx, _sy, _dz;
 
-            public RayTriangles(RayLanes r, TriangleSet b)
+            public RayTriangles(RayLanes r, Ray3 ray, TriangleSet b)
             {
-                _r = r;
+                _r = r; _ray = ray; _set = b;
                 float adx = Math.Abs(r.DX), ady = Math.Abs(r.DY), adz = Math.Abs(r.DZ);
                 int kz = adx >= ady ? (adx >= adz ? 0 : 2) : (ady >= adz ? 1 : 2);
                 int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
@@ -206,16 +215,40 @@ namespace ProximityLib.Batch
                 var by = new Vector<float>(_by, i) - oy - sy * bz;
                 var cx = new Vector<float>(_cx, i) - ox - sx * cz;
                 var cy = new Vector<float>(_cy, i) - oy - sy * cz;
-                var u = cx * by - cy * bx;
-                var v = ax * cy - ay * cx;
-                var w = bx * ay - by * ax;
+                Vector<float> u1 = cx * by, u2 = cy * bx, v1 = ax * cy, v2 = ay * cx, w1 = bx * ay, w2 = by * ax;
+                var u = u1 - u2;
+                var v = v1 - v2;
+                var w = w1 - w2;
                 var det = u + v + w;
                 var zero = Vector<float>.Zero;
                 var negative = Vector.LessThan(u, zero) | Vector.LessThan(v, zero) | Vector.LessThan(w, zero);
                 var positive = Vector.GreaterThan(u, zero) | Vector.GreaterThan(v, zero) | Vector.GreaterThan(w, zero);
+                var size = Vector.Abs(u1) + Vector.Abs(u2) + Vector.Abs(v1) + Vector.Abs(v2) + Vector.Abs(w1) + Vector.Abs(w2);
+                var ill = ~(negative & positive) & Vector.LessThanOrEqual(Vector.Abs(det), size * new Vector<float>(Ill));
                 var t = (u * az + v * bz + w * cz) / (det * new Vector<float>(_dz)) + zero;
                 var hit = ~(negative & positive) & ~Vector.Equals(det, zero) & Vector.GreaterThanOrEqual(t, zero);
-                return _r.Limit(hit, t);
+                var result = _r.Limit(hit, t);
+                return Vector.EqualsAll(ill, Vector<int>.Zero) ? result : Rescue(i, result, ill);
+            }
+
+            /// <summary>The lanes of <paramref name="ill"/> replaced by the scalar cast (rare: not inlined into the loop).</summary>
+            [MethodImpl(MethodImplOptions.NoInlining)]
+            private Vector<float> Rescue(int i, Vector<float> result, Vector<int> ill)
+            {
+                int n = Vector<float>.Count;
+                Span<float> lanes = stackalloc float[n];
+                System.Runtime.InteropServices.MemoryMarshal.Cast<float, Vector<float>>(lanes)[0] = result;
+                for (int k = 0; k < n; k++)
+                    if (ill[k] != 0) lanes[k] = Scalar(i + k);
+                return System.Runtime.InteropServices.MemoryMarshal.Cast<float, Vector<float>>(lanes)[0];
+            }
+
+            /// <summary>Lane i by the scalar <see cref="Raycast"/> (computed in double, rounded once), within maxDistance.</summary>
+            private float Scalar(int i)
+            {
+                var s = _set;
+                var h = Raycast.Cast(_ray, new Triangle3(new Vector3(s.AX[i], s.AY[i], s.AZ[i]), new Vector3(s.BX[i], s.BY[i], s.BZ[i]), new Vector3(s.CX[i], s.CY[i], s.CZ[i])));
+                return _r.Limit(h.Hit, h.T);
             }
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -225,9 +258,12 @@ namespace ProximityLib.Batch
                 float ax = _ax[i] - _ox - _sx * az, ay = _ay[i] - _oy - _sy * az;
                 float bx = _bx[i] - _ox - _sx * bz, by = _by[i] - _oy - _sy * bz;
                 float cx = _cx[i] - _ox - _sx * cz, cy = _cy[i] - _oy - _sy * cz;
-                float u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
+                float u1 = cx * by, u2 = cy * bx, v1 = ax * cy, v2 = ay * cx, w1 = bx * ay, w2 = by * ax;
+                float u = u1 - u2, v = v1 - v2, w = w1 - w2;
                 float det = u + v + w;
-                if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0) || det == 0) return float.PositiveInfinity;
+                if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return float.PositiveInfinity;
+                float size = Math.Abs(u1) + Math.Abs(u2) + Math.Abs(v1) + Math.Abs(v2) + Math.Abs(w1) + Math.Abs(w2);
+                if (Math.Abs(det) <= size * Ill) return Scalar(i);
                 float t = (u * az + v * bz + w * cz) / (det * _dz) + 0f;
                 return _r.Limit(t >= 0, t);
             }
