@@ -166,17 +166,6 @@ if (fuzz > 0 || fuzzNew > 0 || casts > 0)
             page.AppendLine("`--fuzz-casts-replay SEED:INDEX`.");
             page.AppendLine();
             page.AppendLine($"{castReport.Cases} casts; {castReport.WorstE.Values.Sum(v => v.Count)} well-conditioned hits measured; {castReport.FailureCount} invariant violations.");
-            if (castReport.Known.Count > 0)
-            {
-                page.AppendLine();
-                page.AppendLine("Known library issues, reported and not failed (`CastChecker.KnownIssues`; replay the first case of each):");
-                page.AppendLine();
-                foreach (var g in castReport.Known.GroupBy(kv => kv.Key.Issue).OrderBy(g => g.Key, StringComparer.Ordinal))
-                {
-                    var first = g.Select(kv => kv.Value.First).OrderBy(f => f.Case.Index).First();
-                    page.AppendLine($"- {g.Key}: {g.Sum(kv => kv.Value.Count)} casts (first {first.Case.Seed}:{first.Case.Index}).");
-                }
-            }
             page.AppendLine();
             page.Append(castReport.FormatErrors());
         }

@@ -57,12 +57,9 @@ namespace ProximityReference.Fuzz
         public IReadOnlyList<string> Code { get; }
         public bool Batch { get; }
 
-        /// <summary>Null for a failure; else the known library issue it is an instance of (reported, not failed: see <see cref="CastChecker.KnownIssues"/>).</summary>
-        public string? Known { get; }
-
-        public CastFailure(CastCase c, string invariant, string message, IReadOnlyList<string> code, bool batch = false, string? known = null)
+        public CastFailure(CastCase c, string invariant, string message, IReadOnlyList<string> code, bool batch = false)
         {
-            Case = c; Invariant = invariant; Message = message; Code = code; Batch = batch; Known = known;
+            Case = c; Invariant = invariant; Message = message; Code = code; Batch = batch;
         }
 
         /// <summary>A self-contained C# repro (top-level statements) that rebuilds the ray and the target bit for bit and makes the call.</summary>
@@ -70,7 +67,7 @@ namespace ProximityReference.Fuzz
         {
             var c = Case;
             var sb = new StringBuilder();
-            sb.AppendLine($"// ray cast on a {c.TargetName} ({c.PrecisionName}), generator \"{c.Generator}\": invariant {Invariant}{(Known != null ? $" (known issue: {Known})" : "")}");
+            sb.AppendLine($"// ray cast on a {c.TargetName} ({c.PrecisionName}), generator \"{c.Generator}\": invariant {Invariant}");
             foreach (var line in Message.Split('\n')) sb.AppendLine("// " + line);
             sb.AppendLine($"// replay: dotnet run --project tests/ProximityLib.Accuracy -c Release -- --fuzz-casts-replay {c.Seed}:{c.Index}");
             sb.AppendLine(Spec.Usings(c.Float));
@@ -153,24 +150,8 @@ namespace ProximityReference.Fuzz
 
         public static List<CastFailure> Run(CastCase c) => Run(c, new HashSet<string>(), new List<(string, double)>());
 
-        private void Fail(string invariant, string message, IReadOnlyList<string> code, bool batch = false, string? known = null) =>
-            _fails.Add(new CastFailure(_c, invariant, message, code, batch, known));
-
-        /// <summary>
-        /// Library issues the fuzz reports without failing (each with its first repro), until they are fixed: a 3D
-        /// sliver's T in double (<see cref="Sliver3D"/>).
-        /// </summary>
-        public static readonly string[] KnownIssues = { Sliver3D };
-
-        /// <summary>
-        /// A 3D sliver (tilt factor F above 2^20: its area below 2^−20 of its size squared, at the hit) hit by a scalar cast:
-        /// T is the average of the vertices' depths weighted by U, V, W / det, whose rounding (about u·m·size) over the
-        /// sliver's area moves T by about u·m·F/cos, more than the sliver is wide. The plane of the edges' cross product is
-        /// no better (measured: worse in 10537 of 20000 slivers, better in 3913); extra precision would be.
-        /// </summary>
-        public const string Sliver3D = "3D triangle sliver's T (tilt factor above 2^20)";
-
-        private string? SliverKnown() => _ref is TriangleRef t && t.Tilt > Math.ScaleB(1, 20) ? Sliver3D : null;
+        private void Fail(string invariant, string message, IReadOnlyList<string> code, bool batch = false) =>
+            _fails.Add(new CastFailure(_c, invariant, message, code, batch));
 
         private string N(double x) => Res.N(x, _float);
         private string Show(HitRes h) => h.Show(_float, _c.Dim);
@@ -304,7 +285,7 @@ namespace ProximityReference.Fuzz
             var t = h.Hit ? Dy.From(h.T) : Dy.Zero;
             _ref.CheckT(h.Hit, t, h.Inside, delta, Rho(h.Hit ? h.T : 0), problems);
             if (problems.Count > 0)
-                Fail(invariant, $"{string.Join("; ", problems)}\nreference: {_ref.Describe(delta)}; U = {_unit.ToDouble():G4} (S = {_s.ToDouble():G4})", code, known: SliverKnown());
+                Fail(invariant, $"{string.Join("; ", problems)}\nreference: {_ref.Describe(delta)}; U = {_unit.ToDouble():G4} (S = {_s.ToDouble():G4})", code);
         }
 
         private void MeasureE(HitRes h)
@@ -333,7 +314,7 @@ namespace ProximityReference.Fuzz
             // (d) on the target (a solid: its boundary) and on the ray.
             var onTol = _ref is TriangleRef tri ? tri.Reach(deltaP) : deltaP + thin;
             if (!_ref.OnTarget(p, onTol))
-                Fail("d point", $"Point is not on the target within {tolText}{(thin.IsZero ? "" : $" + 1.5·tol")}\nreference: {_ref.Describe(_delta)}", code, known: SliverKnown());
+                Fail("d point", $"Point is not on the target within {tolText}{(thin.IsZero ? "" : $" + 1.5·tol")}\nreference: {_ref.Describe(_delta)}", code);
             var w = p - o;
             var wd = DyVec.Dot(w, d);
             var perp2 = w.LengthSquared * dd - wd.Square(); // |perp|²·|d|²
@@ -341,7 +322,7 @@ namespace ProximityReference.Fuzz
             // conditioning (F/cos per δ: a graze or a sliver), and by the edge-on path's tolerance.
             var reach = deltaP + thin + (_ref is TriangleRef tr ? tr.Reach(Dy.Zero) + _delta * Dy.From(Math.Min(tr.Conditioning, Math.ScaleB(1, 60))) : Dy.Zero);
             if (perp2 > reach.Square() * dd)
-                Fail("d point", $"Point is {DyMath.Sqrt(perp2) / DyMath.Sqrt(dd):G4} from the ray's line, more than {reach.ToDouble():G4} ({tolText})", code, known: SliverKnown());
+                Fail("d point", $"Point is {DyMath.Sqrt(perp2) / DyMath.Sqrt(dd):G4} from the ray's line, more than {reach.ToDouble():G4} ({tolText})", code);
             else
             {
                 // Along the ray: Point's parameter within the stretch the answer may have come from.
@@ -608,7 +589,7 @@ namespace ProximityReference.Fuzz
             var problems = new List<string>();
             _ref.CheckT(h2.Hit, h2.Hit ? Dy.From(h2.T) : Dy.Zero, h2.Inside, _delta, Rho(h2.Hit ? h2.T : 0), problems);
             if (problems.Count > 0)
-                Fail("h translation", $"{what}: the translated answer fails the first-hit check: {string.Join("; ", problems)}\nreference: {_ref.Describe(_delta)}", code, known: SliverKnown());
+                Fail("h translation", $"{what}: the translated answer fails the first-hit check: {string.Join("; ", problems)}\nreference: {_ref.Describe(_delta)}", code);
             else if (h.Hit && h2.Hit && !h.Inside && !h2.Inside && _ref.WellConditioned(_delta).HasValue)
             {
                 var diff = Dy.Abs(Dy.From(h2.T) - Dy.From(h.T));

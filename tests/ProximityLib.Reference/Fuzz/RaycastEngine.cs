@@ -33,9 +33,6 @@ namespace ProximityReference.Fuzz
         public Dictionary<string, long> Ran { get; } = new Dictionary<string, long>();
         public Dictionary<(string Target, string Precision, string Invariant, string Generator), (long Count, CastFailure First)> Failures { get; } =
             new Dictionary<(string, string, string, string), (long, CastFailure)>();
-        /// <summary>Instances of the known library issues (<see cref="CastChecker.KnownIssues"/>): reported, not failed.</summary>
-        public Dictionary<(string Issue, string Target, string Precision), (long Count, CastFailure First)> Known { get; } =
-            new Dictionary<(string, string, string), (long, CastFailure)>();
         /// <summary>Per target and precision ("double", "float", "batch"): the largest E on well-conditioned hits, how many were measured, the first case reaching it.</summary>
         public Dictionary<(string Target, string Precision), (double E, long Count, long Index)> WorstE { get; } =
             new Dictionary<(string, string), (double, long, long)>();
@@ -47,15 +44,9 @@ namespace ProximityReference.Fuzz
             CasesPer[key] = CasesPer.GetValueOrDefault(key) + 1;
             foreach (var r in ran) Ran[r] = Ran.GetValueOrDefault(r) + 1;
             foreach (var (precision, e) in errors) AddE((c.TargetName, precision), (e, 1, c.Index));
-            if (fails.Any(f => f.Known == null)) FailedCases++;
+            if (fails.Count > 0) FailedCases++;
             foreach (var f in fails)
             {
-                if (f.Known != null)
-                {
-                    var kk = (f.Known, c.TargetName, c.PrecisionName);
-                    Known[kk] = Known.TryGetValue(kk, out var ke) ? (ke.Count + 1, f.Case.Index < ke.First.Case.Index ? f : ke.First) : (1, f);
-                    continue;
-                }
                 var k = (c.TargetName, c.PrecisionName, f.Invariant, c.Generator);
                 Failures[k] = Failures.TryGetValue(k, out var e) ? (e.Count + 1, f.Case.Index < e.First.Case.Index ? f : e.First) : (1, f);
             }
@@ -77,10 +68,6 @@ namespace ProximityReference.Fuzz
             foreach (var kv in o.WorstE) AddE(kv.Key, kv.Value);
             foreach (var kv in o.Failures)
                 Failures[kv.Key] = Failures.TryGetValue(kv.Key, out var e)
-                    ? (e.Count + kv.Value.Count, kv.Value.First.Case.Index < e.First.Case.Index ? kv.Value.First : e.First)
-                    : kv.Value;
-            foreach (var kv in o.Known)
-                Known[kv.Key] = Known.TryGetValue(kv.Key, out var e)
                     ? (e.Count + kv.Value.Count, kv.Value.First.Case.Index < e.First.Case.Index ? kv.Value.First : e.First)
                     : kv.Value;
         }
@@ -117,22 +104,9 @@ namespace ProximityReference.Fuzz
             sb.AppendLine("Cases per optional check: " + string.Join(", ", Ran.Where(kv => !kv.Key.StartsWith("note: ")).OrderBy(kv => kv.Key, StringComparer.Ordinal).Select(kv => $"{kv.Key} {kv.Value}")) + ".");
             foreach (var kv in Ran.Where(kv => kv.Key.StartsWith("note: ")).OrderBy(kv => kv.Key, StringComparer.Ordinal))
                 sb.AppendLine($"Note ({kv.Value} cases): {kv.Key.Substring(6)}.");
-            if (Known.Count > 0)
-            {
-                sb.AppendLine("Known library issues (reported, not failed; CastChecker.KnownIssues): " + string.Join(", ",
-                    Known.GroupBy(kv => kv.Key.Issue).OrderBy(g => g.Key, StringComparer.Ordinal).Select(g => $"{g.Key} {g.Sum(kv => kv.Value.Count)} " +
-                        $"(first {g.OrderBy(kv => kv.Value.First.Case.Index).First().Value.First.Case.Seed}:{g.Min(kv => kv.Value.First.Case.Index)})")) + ".");
-            }
             if (Failures.Count == 0)
             {
                 sb.AppendLine("No invariant violated.");
-                if (repros > 0)
-                    foreach (var g in Known.GroupBy(kv => kv.Key.Issue).OrderBy(g => g.Key, StringComparer.Ordinal))
-                    {
-                        sb.AppendLine();
-                        sb.AppendLine($"---- known issue: {g.Key} ----");
-                        sb.Append(g.OrderBy(kv => kv.Value.First.Case.Index).First().Value.First.Repro());
-                    }
                 return sb.ToString();
             }
             sb.AppendLine($"{FailureCount} violations in {FailedCases} cases.");

@@ -874,9 +874,6 @@ namespace ProximityReference.Fuzz
 
         public override bool OnTarget(DyVec x, Dy tol) => Core.NearTriangle(x, _a, _b, _c, tol);
 
-        /// <summary>The tilt factor F at the exact crossing (1 without one).</summary>
-        public double Tilt => _tilt;
-
         /// <summary>Whether the ray lies in the triangle's plane (exactly).</summary>
         public bool InPlane => _plane != null;
 
