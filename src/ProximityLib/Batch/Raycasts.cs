@@ -22,7 +22,7 @@ namespace ProximityLib.Batch
         /// <summary>
         /// Distance along the ray to its first hit on each triangle of b (two-sided, watertight in float: a ray through a
         /// shared edge hits at least one of its triangles), +∞ for a miss or a hit beyond <paramref name="maxDistance"/>. A
-        /// lane the float test hits whose determinant is within 2^-10 of its terms' size (a degenerate or sliver triangle,
+        /// lane the float test hits whose determinant is within about 2^-10 of its terms' size (a degenerate or sliver triangle,
         /// a ray in or nearly in the triangle's plane: its T would be rounding) is answered as the scalar
         /// <see cref="Raycast"/> answers it, edge-on hits included. Throws <see cref="ArgumentException"/> when
         /// maxDistance is negative or NaN.
@@ -177,8 +177,12 @@ namespace ProximityLib.Batch
         /// </summary>
         private struct RayTriangles : IKernel
         {
-            /// <summary>2^-10: a determinant at most this share of |U|'s, |V|'s and |W|'s products is ill-conditioned.</summary>
-            private const float Ill = 1f / 1024;
+            /// <summary>
+            /// 2^-11: a determinant at most this share of |U|'s, |V|'s and |W|'s first products is ill-conditioned. Where U
+            /// cancels, its two products are about equal, so the first stands for both; where it does not, its rounding
+            /// is a rounding of |U| ≤ |det| (a hit's U, V, W share a sign).
+            /// </summary>
+            private const float Ill = 1f / 2048;
 
             private readonly RayLanes _r;
             private readonly Ray3 _ray;
@@ -221,10 +225,11 @@ namespace ProximityLib.Batch
                 var zero = Vector<float>.Zero;
                 var negative = Vector.LessThan(u, zero) | Vector.LessThan(v, zero) | Vector.LessThan(w, zero);
                 var positive = Vector.GreaterThan(u, zero) | Vector.GreaterThan(v, zero) | Vector.GreaterThan(w, zero);
-                var size = Vector.Abs(u1) + Vector.Abs(u2) + Vector.Abs(v1) + Vector.Abs(v2) + Vector.Abs(w1) + Vector.Abs(w2);
-                var ill = ~(negative & positive) & Vector.LessThanOrEqual(Vector.Abs(det), size * new Vector<float>(Ill));
+                var inside = ~(negative & positive);
+                var size = Vector.Abs(u1) + Vector.Abs(v1) + Vector.Abs(w1);
+                var ill = inside & Vector.LessThanOrEqual(Vector.Abs(det), size * new Vector<float>(Ill));
                 var t = (u * az + v * bz + w * cz) / (det * new Vector<float>(_dz)) + zero;
-                var hit = ~(negative & positive) & ~Vector.Equals(det, zero) & Vector.GreaterThanOrEqual(t, zero);
+                var hit = inside & ~Vector.Equals(det, zero) & Vector.GreaterThanOrEqual(t, zero);
                 var result = _r.Limit(hit, t);
                 return Vector.EqualsAll(ill, Vector<int>.Zero) ? result : Rescue(i, result, ill);
             }
@@ -260,7 +265,7 @@ namespace ProximityLib.Batch
                 float u = u1 - u2, v = v1 - v2, w = w1 - w2;
                 float det = u + v + w;
                 if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return float.PositiveInfinity;
-                float size = Math.Abs(u1) + Math.Abs(u2) + Math.Abs(v1) + Math.Abs(v2) + Math.Abs(w1) + Math.Abs(w2);
+                float size = Math.Abs(u1) + Math.Abs(v1) + Math.Abs(w1);
                 if (Math.Abs(det) <= size * Ill) return Scalar(i);
                 float t = (u * az + v * bz + w * cz) / (det * _dz) + 0f;
                 return _r.Limit(t >= 0, t);
