@@ -50,7 +50,8 @@ namespace ProximityTests.Fuzz
         /// exactly collinear triangle missed, an in-plane ray missed, a far sliver's T 1.7e-7 off, a sliver hit at a vertex
         /// off the ray; slivers of tilt factor 7e8 and above hit square-on, T 4e-8 off from the weighted mean); 2D slivers hit past their ends; nearly collinear 2D ray targets with T off the point; 3D line and
         /// ray targets parallel to rounding whose noisy crossing inflated the tolerance until an origin 3.5–14 away was on them;
-        /// a ray along a zero-radius capsule from behind it hitting the far end; a 2D segment's T from subnormal side values.
+        /// a ray along a zero-radius capsule from behind it hitting the far end; a 2D segment's T from subnormal side values; a
+        /// capsule's side grazed by a ray nearly along its axis, its point on the tangent line 8e-11 off the ray.
         /// </summary>
         [TestCase(1, 885, TestName = "Zero-radius capsule end: normal along the ray")]
         [TestCase(1, 775, TestName = "Zero-radius capsule crossed: normal along the ray")]
@@ -71,6 +72,7 @@ namespace ProximityTests.Fuzz
         [TestCase(2, 29006, TestName = "3D sliver hit at a vertex off the ray")]
         [TestCase(12, 750646, TestName = "Far 3D sliver hit square-on, T from the exact plane")]
         [TestCase(3, 88646, TestName = "Far 3D sliver, tilt factor above 2^20")]
+        [TestCase(1, 548925, TestName = "Capsule side grazed by a ray nearly along its axis: the point on the ray")]
         public void CasesTheFuzzFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = CastChecker.Run(CastCase.Create(seed, index));

@@ -81,9 +81,15 @@ namespace ProximityLib.Double
                         double u = wp + dp * t;
                         if (u >= 0 && u <= 1 && t < best.T)
                         {
-                            // As for the ball, in the plane across the axis: wn + dn·t = across + dn·(q + t), q + t ≤ 0.
-                            var n = Unit(across + dn * Math.Min(q + t, 0), -d);
-                            best = new RayHit3(t, SegmentPoint(a, b, u) + n * r, n, false);
+                            // As for the ball, in the plane across the axis: wn + dn·t = across + dn·(q + t), q + t ≤ 0
+                            // for the normal. The point follows the ray across the axis unclamped: at a graze by a ray
+                            // nearly along the axis T is ill-conditioned, and a point on the tangent line would sit
+                            // |dn|·(q + t) off the ray (fuzz 1:548925: 8e-11), where the ray's own point is on the side to
+                            // second order.
+                            double s = q + t;
+                            var n = Unit(across + dn * Math.Min(s, 0), -d);
+                            var toward = s > 0 ? Unit(across + dn * s, n) : n;
+                            best = new RayHit3(t, SegmentPoint(a, b, u) + toward * r, n, false);
                         }
                     }
                 }
