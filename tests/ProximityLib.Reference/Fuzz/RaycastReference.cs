@@ -857,13 +857,13 @@ namespace ProximityReference.Fuzz
             }
             else if (_nd.IsZero && _h0.Square() > dw.Square() * _nn && hit)
                 problems.Add($"hit at T = {t.ToDouble():R}, but the ray is parallel to the plane and farther than δ_w = {dw.ToDouble():G4} from it");
-            // A sliver's weights U, V, W / det carry det's rounding (about u·m·size) over its area: T is off by about
-            // u·m·F/cos, which moves o + T·d off it by up to that, but a δ-perturbed sliver stays within its altitude of
-            // it: the allowance is the smaller (F the tilt factor; about 1–10 for a triangle that is not a sliver).
-            var sliver = _cos > 0 ? Dy.Min(_relative * _m * Dy.From(Math.Min(_tilt / _cos, Math.ScaleB(1, 60))), _altitude) : Dy.Zero;
-            var near = dw + rho * Roots.SqrtUpper(DD) * Dy.From(2) + sliver;
+            // At a glancing angle T carries about u·m/cos (the plane's rounding, seen along the ray), which moves o + T·d
+            // along the ray, off the triangle by up to that; a δ-perturbed triangle stays within its altitude of it: the
+            // allowance is the smaller. (Slivers get no more: their T comes from the exact plane.)
+            var glancing = _cos > 0 ? Dy.Min(_relative * _m * Dy.From(Math.Min(1 / _cos, Math.ScaleB(1, 60))), _altitude) : Dy.Zero;
+            var near = dw + rho * Roots.SqrtUpper(DD) * Dy.From(2) + glancing;
             if (hit && !OnTarget(At(t), near))
-                problems.Add($"o + T·d is farther than δ_w + 2ρ + min(B·u·m·F/cos, altitude) = {near.ToDouble():G4} from the triangle");
+                problems.Add($"o + T·d is farther than δ_w + 2ρ + min(B·u·m/cos, altitude) = {near.ToDouble():G4} from the triangle");
         }
 
         public override Surd? WellConditioned(Dy delta) =>
