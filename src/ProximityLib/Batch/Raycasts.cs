@@ -22,7 +22,7 @@ namespace ProximityLib.Batch
         /// <summary>
         /// Distance along the ray to its first hit on each triangle of b (two-sided, watertight in float: a ray through a
         /// shared edge hits at least one of its triangles), +∞ for a miss or a hit beyond <paramref name="maxDistance"/>. A
-        /// lane the float test hits whose determinant is within about 2^-10 of its terms' size (a degenerate or sliver triangle,
+        /// lane the float test hits whose determinant is within 2^-11 of its edge functions' first products (a degenerate or sliver triangle,
         /// a ray in or nearly in the triangle's plane: its T would be rounding) is answered as the scalar
         /// <see cref="Raycast"/> answers it, edge-on hits included. Throws <see cref="ArgumentException"/> when
         /// maxDistance is negative or NaN.
@@ -234,13 +234,17 @@ namespace ProximityLib.Batch
                 return Vector.EqualsAll(ill, Vector<int>.Zero) ? result : Rescue(i, result, ill);
             }
 
-            /// <summary>The lanes of <paramref name="ill"/> replaced by the scalar cast (rare: not inlined into the loop).</summary>
+            /// <summary>
+            /// The lanes of <paramref name="ill"/> replaced by the scalar cast (rare: not inlined into the loop). The set's
+            /// padding lanes are point triangles (zeros), always flagged: they are skipped, so a set whose size is not a
+            /// whole number of vectors costs one call here, not a scalar cast per padding lane.
+            /// </summary>
             [MethodImpl(MethodImplOptions.NoInlining)]
             private Vector<float> Rescue(int i, Vector<float> result, Vector<int> ill)
             {
-                int n = Vector<float>.Count;
-                Span<float> lanes = stackalloc float[n];
+                Span<float> lanes = stackalloc float[Vector<float>.Count];
                 System.Runtime.InteropServices.MemoryMarshal.Cast<float, Vector<float>>(lanes)[0] = result;
+                int n = Math.Min(lanes.Length, _set.Count - i);
                 for (int k = 0; k < n; k++)
                     if (ill[k] != 0) lanes[k] = Scalar(i + k);
                 return System.Runtime.InteropServices.MemoryMarshal.Cast<float, Vector<float>>(lanes)[0];

@@ -162,6 +162,44 @@ namespace ProximityTests.Raycasts
         /// fuzz found both (seed 1: 1:18816, 1:12256): the three edge lines are parallel to rounding, so their side functions
         /// and clip times were noise, and the ray "entered" where it crosses their common line 0.14 (then 0.55) past a vertex.
         /// </summary>
+        /// <summary>
+        /// Needles (long edge 2^-30, width 2^-12…2^-15 of it) 1.5 away, hit through a point near the centroid: the sliver
+        /// path's T, and the same configuration scaled by 2^-240 and 2^200 gives the 2^k-scaled answer bit for bit (the
+        /// sliver test's fourth powers underflowed at 2^-240 and the old weighted mean came back: review of 244d4d7).
+        /// </summary>
+        [Test]
+        public void NeedlesScaleByPowersOfTwoExactly()
+        {
+            var r = new Random(17);
+            int hits = 0;
+            for (int i = 0; i < 400; i++)
+            {
+                double len = Math.ScaleB(1, -30), width = len * Math.ScaleB(1, -12 - r.Next(4));
+                var a = V(r.NextDouble() - 0.5, r.NextDouble() - 0.5, 1.5);
+                var along = V(r.NextDouble() - 0.5, r.NextDouble() - 0.5, r.NextDouble() - 0.5);
+                along *= len / along.Length;
+                var across = Vector3D.Cross(along, V(0.3, 0.7, -0.2));
+                across *= width / across.Length;
+                var b = a + along;
+                var c = a + along * 0.5 + across;
+                var aim = (a + b + c) * (1.0 / 3) + across * (r.NextDouble() * 0.2 - 0.1);
+                var o = V(0, 0, 0);
+                var h = Raycast.Cast(new Ray3(o, aim), new Triangle3(a, b, c));
+                if (!h.Hit) continue;
+                hits++;
+                Assert.That(Math.Abs(h.T - aim.Length), Is.LessThanOrEqualTo(1e-12), $"needle {i}: T {h.T:R}, the aim point at {aim.Length:R}");
+                foreach (int k in new[] { -240, 200 })
+                {
+                    double f = Math.ScaleB(1, k);
+                    var hs = Raycast.Cast(new Ray3(o * f, aim), new Triangle3(a * f, b * f, c * f));
+                    Assert.That(hs.Hit, $"needle {i} scaled by 2^{k}");
+                    Assert.That(hs.T, Is.EqualTo(h.T * f), $"needle {i} scaled by 2^{k}");
+                    Assert.That(hs.Point, Is.EqualTo(h.Point * f), $"needle {i} scaled by 2^{k}");
+                }
+            }
+            Assert.That(hits, Is.GreaterThan(300));
+        }
+
         [Test]
         public void SliversAreNotHitPastTheirEnds()
         {

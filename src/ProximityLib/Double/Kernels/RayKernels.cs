@@ -307,8 +307,12 @@ namespace ProximityLib.Double
             var e2 = C - A;
             var N = Vector3D.Cross(e1, e2);
             if (N == default) return RayEdgeOn(o, d, A, B, C, m); // degenerate after all: the segment or point it is
-            double l2 = Math.Max(e1.LengthSquared, e2.LengthSquared);
-            if (N.LengthSquared < Sliver2 * (l2 * l2)) return RaySliver(o, d, A, B, C);
+            // Fourth powers of the edges underflow in the fast range's small end (m down to 2^-240): compared at the
+            // scale of m (powers of two, exact), so 2^k-scaled inputs take the same path.
+            double s2 = Num.InversePowerOfTwo(m);
+            s2 *= s2;
+            double l2 = Math.Max(e1.LengthSquared, e2.LengthSquared) * s2;
+            if ((N * s2).LengthSquared < Sliver2 * (l2 * l2)) return RaySliver(o, d, A, B, C);
             double t = (U * az + V * bz + W * cz) / (det * dz);
             if (!(t >= 0)) return RayHit3.Miss;
             var n = Unit(N, -d);
