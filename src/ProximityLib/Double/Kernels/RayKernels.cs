@@ -307,16 +307,24 @@ namespace ProximityLib.Double
             var e2 = C - A;
             var N = Vector3D.Cross(e1, e2);
             if (N == default) return RayEdgeOn(o, d, A, B, C, m); // degenerate after all: the segment or point it is
-            // Fourth powers of the edges underflow in the fast range's small end (m down to 2^-240): compared at the
-            // scale of m (powers of two, exact), so 2^k-scaled inputs take the same path.
-            double s2 = Num.InversePowerOfTwo(m);
-            s2 *= s2;
-            double l2 = Math.Max(e1.LengthSquared, e2.LengthSquared) * s2;
-            if ((N * s2).LengthSquared < Sliver2 * (l2 * l2)) return RaySliver(o, d, A, B, C);
+            double l2 = Math.Max(e1.LengthSquared, e2.LengthSquared), l4 = l2 * l2;
+            if (l4 >= 1e-270 ? N.LengthSquared < Sliver2 * l4 : TinySliver(N, l2, m)) return RaySliver(o, d, A, B, C);
             double t = (U * az + V * bz + W * cz) / (det * dz);
             if (!(t >= 0)) return RayHit3.Miss;
             var n = Unit(N, -d);
             return new RayHit3(t + 0.0, A + e1 * (V / det) + e2 * (W / det), Vector3D.Dot(n, d) > 0 ? -n : n, false);
+        }
+
+        /// <summary>
+        /// The sliver test where the fourth powers of the edges underflow (the fast range's small end, m down to 2^-240):
+        /// at the scale of m (powers of two, exact), so 2^k-scaled inputs take the same path as at scale 1.
+        /// </summary>
+        private static bool TinySliver(Vector3D n, double l2, double m)
+        {
+            double s2 = Num.InversePowerOfTwo(m);
+            s2 *= s2;
+            l2 *= s2;
+            return (n * s2).LengthSquared < Sliver2 * (l2 * l2);
         }
 
         /// <summary>
