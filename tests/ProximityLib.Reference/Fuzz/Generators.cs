@@ -209,7 +209,8 @@ namespace ProximityReference.Fuzz
                 }
                 default:
                     // The offset form only where the offset is finite (a point near 1e307 times a normal of 20 is not).
-                    if (r.Chance(1.0 / 3) && double.IsFinite(Vector3D.Dot(c, length))) return Spec.HalfSpaceOffset(dim, length, Vector3D.Dot(c, length));
+                    double offset = Vector3D.Dot(c, length);
+                    if (r.Chance(1.0 / 3) && double.IsFinite(offset)) return Spec.HalfSpaceOffset(dim, length, offset);
                     return Spec.HalfSpace(dim, c, length);
             }
         }
@@ -408,7 +409,8 @@ namespace ProximityReference.Fuzz
                     case Kind.HalfSpace:
                     {
                         var nrm = w != default ? w : Axis(r, dim) * g;
-                        return r.Chance(0.25) && double.IsFinite(Vector3D.Dot(shared, nrm)) ? Spec.HalfSpaceOffset(dim, nrm, Vector3D.Dot(shared, nrm)) : Spec.HalfSpace(dim, shared, nrm);
+                        double offset = Vector3D.Dot(shared, nrm);
+                        return r.Chance(0.25) && double.IsFinite(offset) ? Spec.HalfSpaceOffset(dim, nrm, offset) : Spec.HalfSpace(dim, shared, nrm);
                     }
                     case Kind.Aabb:
                         return r.Int(3) switch

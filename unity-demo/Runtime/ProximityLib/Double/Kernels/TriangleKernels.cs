@@ -493,12 +493,9 @@ namespace ProximityLib.Double
         private static double FlatPush(Vector3D p0, Vector3D p1, in TriFrame f, out Vector3D dir)
         {
             dir = default;
-            double l1 = f.E1.LengthSquared, l2 = f.E2.LengthSquared, l3 = f.E3.LengthSquared;
-            Vector3D x = f.B, y = f.A;
-            if (l2 > l1 && l2 >= l3) x = f.C;
-            else if (l3 > l1 && l3 > l2) { x = f.C; y = f.B; }
+            int i = LongestIndex(f);
             ExactDiff(p1, p0, f.K, out var d, out var dl);
-            ExactDiff(x, y, f.K, out var e, out var el);
+            ExactDiff(i == 0 ? f.B : f.C, i == 2 ? f.B : f.A, f.K, out var e, out var el);
             var c = FacetAxis(d, dl, e, el);
             var q0 = (p0 - f.A) * f.K;
             var q1 = (p1 - f.A) * f.K;
@@ -529,8 +526,15 @@ namespace ProximityLib.Double
         /// <summary>The longest scaled edge (the first of equal ones): a flat triangle's hull.</summary>
         private static Vector3D Longest(in TriFrame f)
         {
+            int i = LongestIndex(f);
+            return i == 0 ? f.E1 : i == 1 ? f.E2 : f.E3;
+        }
+
+        /// <summary>Which edge <see cref="Longest"/> is: 0 for E1 (A→B), 1 for E2 (A→C), 2 for E3 (B→C).</summary>
+        private static int LongestIndex(in TriFrame f)
+        {
             double l1 = f.E1.LengthSquared, l2 = f.E2.LengthSquared, l3 = f.E3.LengthSquared;
-            return l1 >= l2 ? (l1 >= l3 ? f.E1 : f.E3) : (l2 >= l3 ? f.E2 : f.E3);
+            return l1 >= l2 ? (l1 >= l3 ? 0 : 2) : (l2 >= l3 ? 1 : 2);
         }
 
         // ---- 2D: segment against a solid triangle ----
