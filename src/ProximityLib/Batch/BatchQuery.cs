@@ -191,8 +191,29 @@ namespace ProximityLib.Batch
                 new Vector<float>(_b.MaxX, i), new Vector<float>(_b.MaxY, i), new Vector<float>(_b.MaxZ, i), _margin);
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            public float Lane(int i) => PointBox(_a.XAt(i), _a.YAt(i), _a.ZAt(i), _a.RAt(i),
-                _b.MinX[i], _b.MinY[i], _b.MinZ[i], _b.MaxX[i], _b.MaxY[i], _b.MaxZ[i], _margin);
+            public float Lane(int i) => _margin
+                ? Margin(_a.XAt(i), _a.YAt(i), _a.ZAt(i), _a.RAt(i), i)
+                : PointBox(_a.XAt(i), _a.YAt(i), _a.ZAt(i), _a.RAt(i), _b.MinX[i], _b.MinY[i], _b.MinZ[i], _b.MaxX[i], _b.MaxY[i], _b.MaxZ[i], false);
+
+            /// <summary>
+            /// The margin value of lane i, which only verdicts read, stopping at the first axis whose partial squared gap
+            /// already exceeds r²: the sum only grows, so the sign is the full sum's. The sums are formed in the vector
+            /// order. Why: on Mono the three clamps' branches mispredict on mixed inputs, and one-to-many verdicts ran 3×
+            /// slower than the scalar API, which also stops at the first separating axis.
+            /// </summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private float Margin(float px, float py, float pz, float r, int i)
+            {
+                float rr = r * r;
+                float dx = px - Runner.Clamp(px, _b.MinX[i], _b.MaxX[i]);
+                float d2 = dx * dx;
+                if (d2 > rr) return d2 - rr;
+                float dy = py - Runner.Clamp(py, _b.MinY[i], _b.MaxY[i]);
+                d2 += dy * dy;
+                if (d2 > rr) return d2 - rr;
+                float dz = pz - Runner.Clamp(pz, _b.MinZ[i], _b.MaxZ[i]);
+                return d2 + dz * dz - rr;
+            }
         }
 
         private struct SphereObb<TS> : IKernel where TS : struct, ISpheres
