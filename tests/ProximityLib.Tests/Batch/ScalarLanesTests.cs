@@ -174,6 +174,37 @@ namespace ProximityTests.Batch
         }
 
         [Test]
+        public void PointsOffABoxByLessThanSquaresResolveAreInsideInEveryLane()
+        {
+            // A float gap g squares to 0 when |g| ≤ 2^-75 (g² ≤ 2^-150 rounds to 0, ties to even) and to 2^-149 or more
+            // beyond, so a point 2^-75 outside the box has squared distance 0 and counts as inside; one float step
+            // farther it does not. The scalar verdict lanes compare the gap with 2^-75 instead of squaring it.
+            float g = MathF.Pow(2, -75), beyond = BitConverter.Int32BitsToSingle(BitConverter.SingleToInt32Bits(g) + 1);
+            // Below the box [0, 1]³ (gaps at its min faces) and above [−1, 0]³ (at its max faces), on each axis.
+            var low = new F.Aabb3(new Vector3(0, 0, 0), new Vector3(1, 1, 1));
+            var high = new F.Aabb3(new Vector3(-1, -1, -1), new Vector3(0, 0, 0));
+            var cases = new (Vector3 Point, F.Aabb3 Box, bool Inside)[]
+            {
+                (new Vector3(-g, 0.5f, 0.5f), low, true), (new Vector3(-beyond, 0.5f, 0.5f), low, false),
+                (new Vector3(0.5f, -g, 0.5f), low, true), (new Vector3(0.5f, -beyond, 0.5f), low, false),
+                (new Vector3(0.5f, 0.5f, -g), low, true), (new Vector3(0.5f, 0.5f, -beyond), low, false),
+                (new Vector3(g, -0.5f, -0.5f), high, true), (new Vector3(beyond, -0.5f, -0.5f), high, false),
+                (new Vector3(-0.5f, g, -0.5f), high, true), (new Vector3(-0.5f, beyond, -0.5f), high, false),
+                (new Vector3(-0.5f, -0.5f, g), high, true), (new Vector3(-0.5f, -0.5f, beyond), high, false),
+                (new Vector3(g, g, g), high, true), (new Vector3(-g, -g, -beyond), low, false),
+            };
+            var points = new PointSet(cases.Select(c => c.Point).ToArray());
+            var boxes = new AabbSet(cases.Select(c => c.Box).ToArray());
+            var expected = cases.Select(c => c.Inside).ToArray();
+            foreach (bool vectorized in new[] { true, false })
+            {
+                Assert.That(Run<bool>(vectorized, cases.Length, x => BatchQuery.Overlaps(points, boxes, x)), Is.EqualTo(expected), $"paired, vectorized {vectorized}");
+                for (int i = 0; i < cases.Length; i++)
+                    Assert.That(Run<bool>(vectorized, 1, x => BatchQuery.Overlaps(cases[i].Point, new AabbSet(new[] { cases[i].Box }), x))[0], Is.EqualTo(expected[i]), $"one-to-many, case {i}, vectorized {vectorized}");
+            }
+        }
+
+        [Test]
         public void MinimumOrdersSignedZerosAndPropagatesNaN()
         {
             Assert.That(BitConverter.SingleToInt32Bits(Runner.Min(0f, -0f)), Is.EqualTo(BitConverter.SingleToInt32Bits(-0f)));
