@@ -9,6 +9,27 @@ namespace ProximityLib
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double Clamp(double x, double lo, double hi) => Math.Min(Math.Max(x, lo), hi);
 
+        // Max, Min and FastClamp are for operands that are never NaN and never two zeros of opposite sign (shapes store no
+        // −0, and a difference of distinct values is not zero): there they equal Math.Max/Min bit for bit, which on .NET
+        // spend three instructions each on NaN and zero-sign rules that the hardware's maxsd/minsd leave out.
+#if NET
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double Max(double x, double y) => double.MaxNative(x, y);
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double Min(double x, double y) => double.MinNative(x, y);
+#else
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double Max(double x, double y) => Math.Max(x, y);
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double Min(double x, double y) => Math.Min(x, y);
+#endif
+
+        /// <summary><see cref="Clamp"/> by <see cref="Max"/> and <see cref="Min"/> (the same operand rules).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double FastClamp(double x, double lo, double hi) => Min(Max(x, lo), hi);
+
         public static void Finite(double value, string name)
         {
             if (!double.IsFinite(value)) throw new ArgumentException($"{name} must be finite (got {value}).", name);

@@ -43,5 +43,34 @@ namespace ProximityTests.Pairs
             Assert.That(ProximityQuery.Overlaps(Unit, b), Is.True);
             Assert.That(ProximityQuery.Overlaps(new Aabb2(V(0, 0), V(1, 1)), new Aabb2(V(1, 1), V(2, 2))), Is.True);
         }
+
+        [Test]
+        public void SharedSubnormalIntervalKeepsBothWitnessesInsideBothBoxes()
+        {
+            // x touches (depth 0, first on ties); y is shared at the single value 3ε: ½·3ε rounds to 2ε (ties to even),
+            // so ½lo + ½hi = 4ε would leave both boxes. The witnesses' y must be 3ε.
+            double e = double.Epsilon;
+            var a = new Aabb3(V(0, 0, 0), V(1, 3 * e, 1));
+            var b = new Aabb3(V(1, 3 * e, 0), V(2, 1, 1));
+            var r = ClosestDistance.Between(a, b);
+            Assert.That(r.Distance, Is.EqualTo(0));
+            Assert.That(r.PointA.Y, Is.EqualTo(3 * e));
+            Assert.That(r.PointB.Y, Is.EqualTo(3 * e));
+            Assert.That(r.PointA.X, Is.EqualTo(1));
+            Assert.That(r.PointB.X, Is.EqualTo(1));
+            var swapped = ClosestDistance.Between(b, a);
+            Assert.That(swapped.PointA, Is.EqualTo(r.PointB));
+            Assert.That(swapped.PointB, Is.EqualTo(r.PointA));
+        }
+
+        [Test]
+        public void DistanceAloneAgreesWithBetweenApartAndOverlapping()
+        {
+            var apart = new Aabb3(V(2, 3, 3), V(4, 4, 4));
+            var overlapping = new Aabb3(V(0.25, -1, 0.75), V(0.5, 2, 3)); // least overlap: z, 1 − 0.75
+            Assert.That(ClosestDistance.Distance(Unit, apart), Is.EqualTo(3));
+            Assert.That(ClosestDistance.Distance(Unit, overlapping), Is.EqualTo(-0.25));
+            Assert.That(ClosestDistance.Between(Unit, overlapping).Distance, Is.EqualTo(-0.25));
+        }
     }
 }
