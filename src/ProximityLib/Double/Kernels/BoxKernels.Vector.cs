@@ -183,6 +183,45 @@ namespace ProximityLib.Double
             return hits == 0 ? double.PositiveInfinity : m.ToScalar();
         }
 
+        /// <summary>
+        /// <see cref="Corners2Scalar"/> on AVX2 lanes, A's four corners in one vector and B's in another: each lane makes
+        /// the scalar form's operations (a zero added where it adds nothing), so the same bits and the same corner.
+        /// </summary>
+        internal static double Corners2Vector(Vector2D pa, Vector2D dx, Vector2D dy, Vector2D loB, Vector2D hiB,
+            Vector2D pb, Vector2D ex, Vector2D ey, Vector2D loA, Vector2D hiA, out int win)
+        {
+            Vector256<double> rx = Outside(Corners4(pa.X, dx.X, dy.X), loB.X, hiB.X), ry = Outside(Corners4(pa.Y, dx.Y, dy.Y), loB.Y, hiB.Y);
+            Vector256<double> sx = Outside(Corners4(pb.X, ex.X, ey.X), loA.X, hiA.X), sy = Outside(Corners4(pb.Y, ex.Y, ey.Y), loA.Y, hiA.Y);
+            var a = rx * rx + ry * ry;
+            var b = sx * sx + sy * sy;
+            var m = Vector256.Min(a, b);
+            m = Vector256.Min(m, Avx.Permute(m, 0b0101));
+            m = Vector256.Min(m, Avx.Permute2x128(m, m, 1));
+            uint hits = Vector256.Equals(a, m).ExtractMostSignificantBits() | (Vector256.Equals(b, m).ExtractMostSignificantBits() << 4);
+            win = hits == 0 ? 0 : System.Numerics.BitOperations.TrailingZeroCount(hits);
+            return hits == 0 ? double.PositiveInfinity : m.ToScalar();
+        }
+
+        /// <summary>
+        /// The first of the axes (ax, ay, bx, by) holding the least of <see cref="TryAxis2"/>'s push-outs, or −1 when none
+        /// is an axis: per lane (ra + rb − |sep|)/len, exactly the smaller of its down and up.
+        /// </summary>
+        internal static int LeastAxis2(Vector2D ax, Vector2D ay, Vector2D bx, Vector2D by, Vector2D ha, Vector2D hb, Vector2D t)
+        {
+            Vector256<double> x = Vector256.Create(ax.X, ay.X, bx.X, by.X), y = Vector256.Create(ax.Y, ay.Y, bx.Y, by.Y);
+            var len2 = x * x + y * y;
+            var ra = Vector256.Create(ha.X) * Vector256.Abs(Vector256.Create(ax.X) * x + Vector256.Create(ax.Y) * y)
+                + Vector256.Create(ha.Y) * Vector256.Abs(Vector256.Create(ay.X) * x + Vector256.Create(ay.Y) * y);
+            var rb = Vector256.Create(hb.X) * Vector256.Abs(Vector256.Create(bx.X) * x + Vector256.Create(bx.Y) * y)
+                + Vector256.Create(hb.Y) * Vector256.Abs(Vector256.Create(by.X) * x + Vector256.Create(by.Y) * y);
+            var least = (ra + rb - Vector256.Abs(Vector256.Create(t.X) * x + Vector256.Create(t.Y) * y)) / Vector256.Sqrt(len2);
+            least = Vector256.ConditionalSelect(Vector256.GreaterThan(len2, Vector256<double>.Zero), least, Vector256.Create(double.PositiveInfinity));
+            var m = Vector256.Min(least, Avx.Permute(least, 0b0101));
+            m = Vector256.Min(m, Avx.Permute2x128(m, m, 1));
+            uint hits = Vector256.Equals(least, m).ExtractMostSignificantBits();
+            return hits == 0 ? -1 : System.Numerics.BitOperations.TrailingZeroCount(hits);
+        }
+
         /// <summary>Bit c: the slope dir·r is negative at corner c and positive at corner c + step (residuals of corners 0–3, 4–7).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static uint Descending(Vector3D dir, Vector256<double> rx0, Vector256<double> ry0, Vector256<double> rz0,
