@@ -51,6 +51,26 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
+        /// <see cref="BoxBox"/> and <see cref="BoxBoxDistance"/> on the shapes, their <see cref="Box"/> forms built here:
+        /// built by the inlined pair wrappers (twice, for either order) they were zeroed and copied through the stack
+        /// at a cost comparable to the overlap test.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static DistanceResult3 ObbObb(in Obb3 a, in Obb3 b, out bool inRange) => BoxBox(a.ToBox(), b.ToBox(), out inRange);
+
+        /// <inheritdoc cref="ObbObb"/>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static DistanceResult3 AabbObb(in Aabb3 a, in Obb3 b, out bool inRange) => BoxBox(a.ToBox(), b.ToBox(), out inRange);
+
+        /// <inheritdoc cref="ObbObb"/>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static double ObbObbDistance(in Obb3 a, in Obb3 b, out bool inRange) => BoxBoxDistance(a.ToBox(), b.ToBox(), out inRange);
+
+        /// <inheritdoc cref="ObbObb"/>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static double AabbObbDistance(in Aabb3 a, in Obb3 b, out bool inRange) => BoxBoxDistance(a.ToBox(), b.ToBox(), out inRange);
+
+        /// <summary>
         /// The distance of <see cref="BoxBox"/> alone: the same steps, without the witness search of overlapping boxes
         /// unless the depth search found a separation (then its gap is the answer, as there, from the same search).
         /// </summary>
@@ -361,6 +381,36 @@ namespace ProximityLib.Double
         {
             inRange = Range.Box(Size(a, b));
             return BoxBoxOverlaps(a, b);
+        }
+
+        /// <summary><see cref="BoxBoxOverlaps(in Box, in Box, out bool)"/> for two OBBs, on AVX2 without building their <see cref="Box"/> forms.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool ObbObbOverlaps(in Obb3 a, in Obb3 b, out bool inRange)
+        {
+#if NET
+            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported)
+            {
+                int r = ObbObbOverlapsVector(a, b);
+                inRange = (r & 2) != 0;
+                return (r & 1) != 0;
+            }
+#endif
+            return BoxBoxOverlaps(a.ToBox(), b.ToBox(), out inRange);
+        }
+
+        /// <summary><see cref="BoxBoxOverlaps(in Box, in Box, out bool)"/> for an AABB and an OBB, on AVX2 without building their <see cref="Box"/> forms.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool AabbObbOverlaps(in Aabb3 a, in Obb3 b, out bool inRange)
+        {
+#if NET
+            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported)
+            {
+                int r = AabbObbOverlapsVector(a, b);
+                inRange = (r & 2) != 0;
+                return (r & 1) != 0;
+            }
+#endif
+            return BoxBoxOverlaps(a.ToBox(), b.ToBox(), out inRange);
         }
 
         /// <summary>
