@@ -8,10 +8,10 @@ namespace ProximityLib.Double
         /// <summary>Closest distance between an OBB and an OBB (3D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 15 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; when apart, the closed forms on the features that can hold the closest pair (every vertex against the other box; in 3D the edges that descend from both ends).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult3 Core(Obb3 a, Obb3 b, out bool inRange) =>
-            Order.Swap(a, b) ? Kernels.ObbObb(b, a, out inRange).Swapped() : Kernels.ObbObb(a, b, out inRange);
+            Order.Swap(a, b) ? Kernels.BoxBox(b.ToBox(), a.ToBox(), out inRange).Swapped() : Kernels.BoxBox(a.ToBox(), b.ToBox(), out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static double DistanceCore(Obb3 a, Obb3 b, out bool inRange) =>
-            Order.Swap(a, b) ? Kernels.ObbObbDistance(b, a, out inRange) : Kernels.ObbObbDistance(a, b, out inRange);
+            Order.Swap(a, b) ? Kernels.BoxBoxDistance(b.ToBox(), a.ToBox(), out inRange) : Kernels.BoxBoxDistance(a.ToBox(), b.ToBox(), out inRange);
         /// <summary>Closest distance between an OBB and an OBB (2D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 4 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; when apart, the closed forms on the features that can hold the closest pair (every vertex against the other box; in 3D the edges that descend from both ends).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult2 Core(Obb2 a, Obb2 b, out bool inRange) =>

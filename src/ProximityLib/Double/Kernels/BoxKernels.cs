@@ -51,26 +51,6 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
-        /// <see cref="BoxBox"/> and <see cref="BoxBoxDistance"/> on the shapes, their <see cref="Box"/> forms built here:
-        /// built by the inlined pair wrappers (twice, for either order) they were zeroed and copied through the stack
-        /// at a cost comparable to the overlap test.
-        /// </summary>
-        [MethodImpl(MethodImplOptions.NoInlining)]
-        public static DistanceResult3 ObbObb(in Obb3 a, in Obb3 b, out bool inRange) => BoxBox(a.ToBox(), b.ToBox(), out inRange);
-
-        /// <inheritdoc cref="ObbObb"/>
-        [MethodImpl(MethodImplOptions.NoInlining)]
-        public static DistanceResult3 AabbObb(in Aabb3 a, in Obb3 b, out bool inRange) => BoxBox(a.ToBox(), b.ToBox(), out inRange);
-
-        /// <inheritdoc cref="ObbObb"/>
-        [MethodImpl(MethodImplOptions.NoInlining)]
-        public static double ObbObbDistance(in Obb3 a, in Obb3 b, out bool inRange) => BoxBoxDistance(a.ToBox(), b.ToBox(), out inRange);
-
-        /// <inheritdoc cref="ObbObb"/>
-        [MethodImpl(MethodImplOptions.NoInlining)]
-        public static double AabbObbDistance(in Aabb3 a, in Obb3 b, out bool inRange) => BoxBoxDistance(a.ToBox(), b.ToBox(), out inRange);
-
-        /// <summary>
         /// The distance of <see cref="BoxBox"/> alone: the same steps, without the witness search of overlapping boxes
         /// unless the depth search found a separation (then its gap is the answer, as there, from the same search).
         /// </summary>

@@ -53,6 +53,30 @@ namespace ProximityTests.Double.Kernels
             }
         }
 
+        /// <summary>
+        /// The overlap entries that make their vectors from the shapes' fields give the verdict and the range flag of the
+        /// test on the shapes' <see cref="Box"/> forms, at unit scale and at scales outside the fast range.
+        /// </summary>
+        [TestCase(1.0)]
+        [TestCase(1e-140)]
+        [TestCase(1e140)]
+        public void OverlapEntriesFromTheShapesMatchTheBoxForms(double scale)
+        {
+            if (!System.Runtime.Intrinsics.X86.Avx2.IsSupported) Assert.Ignore("no AVX2: only the scalar form runs here");
+            var r = new Random(29);
+            for (int i = 0; i < 2000; i++)
+            {
+                var a = RandomBox(r, 3, scale);
+                var b = RandomBox(r, 3, scale);
+                var min = new Vector3D(r.NextDouble(), r.NextDouble(), r.NextDouble()) * (2 * scale);
+                var c = new Aabb3(min, min + new Vector3D(0.1 + r.NextDouble(), 0.1 + r.NextDouble(), 0.1 + r.NextDouble()) * scale);
+                bool obb = ProximityLib.Double.Kernels.BoxBoxOverlaps(a.ToBox(), b.ToBox(), out bool obbIn);
+                Assert.That(ProximityLib.Double.Kernels.ObbObbOverlapsVector(a, b), Is.EqualTo((obb ? 1 : 0) | (obbIn ? 2 : 0)), $"case {i}: OBB–OBB");
+                bool aabb = ProximityLib.Double.Kernels.BoxBoxOverlaps(c.ToBox(), b.ToBox(), out bool aabbIn);
+                Assert.That(ProximityLib.Double.Kernels.AabbObbOverlapsVector(c, b), Is.EqualTo((aabb ? 1 : 0) | (aabbIn ? 2 : 0)), $"case {i}: AABB–OBB");
+            }
+        }
+
         /// <summary>The penetration depth search on AVX2 lanes makes the scalar form's operations per axis: the same bits.</summary>
         [Test]
         public void PenetrationMatchesTheScalarFormBitForBit()
