@@ -91,6 +91,13 @@ namespace ProximityLib.Double
 
         // Inlined, as Aabb3.ToBox is.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal Box2 ToBox2()
+        {
+            var x = AxisX;
+            return new Box2(Center, x, new Vector2D(-x.Y, x.X), -HalfExtents, HalfExtents);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal Box ToBox()
         {
             var x = AxisX;

@@ -122,6 +122,51 @@ namespace ProximityTests.Pairs
                 }
         }
 
+        /// <summary>
+        /// B turned 45° about z sits 0.1 deep on A's top face: the least push moves A down 0.1, and neither support corner
+        /// touches after it (A's lies outside B's turned square, B's outside A), so the witnesses come from A's top edge
+        /// across the push, which does.
+        /// </summary>
+        [Test]
+        public void FaceOnFaceWitnessesFromTheEdgeAcrossThePush()
+        {
+            var a = Turned(0, 0);
+            var b = Obb3.FromQuaternion(V(0, 0, 1.9), 0, 0, Math.Sin(Math.PI / 8), Math.Cos(Math.PI / 8), V(1, 1, 1));
+            var r = ClosestDistance.Between(a, b);
+            Assert.That(r.Distance, Is.EqualTo(-0.1).Within(1e-15));
+            Near(r.PointB - r.PointA, V(0, 0, -0.1), 1e-15, "push");
+            Assert.That(r.PointA.Z, Is.EqualTo(1).Within(1e-15));
+            Assert.That(Math.Abs(r.PointB.X) + Math.Abs(r.PointB.Y), Is.LessThanOrEqualTo(Math.Sqrt(2) + 1e-15), "PointB on B's bottom square");
+            Assert.That(Math.Max(Math.Abs(r.PointA.X), Math.Abs(r.PointA.Y)), Is.LessThanOrEqualTo(1 + 1e-15), "PointA on A's top face");
+            Assert.That(ClosestDistance.Distance(a, b), Is.EqualTo(r.Distance));
+            AssertPushOutTouches(a, b, r);
+        }
+
+        /// <summary>
+        /// Overlapping boxes (B around a point of A, random rotations and sizes): the depth within the bound of the exact
+        /// one, the witnesses a push that leaves the boxes touching, and the distance-only entry the same bits.
+        /// </summary>
+        [Test]
+        public void OverlappingWitnessesPushToTouching()
+        {
+            var rng = new Random(1111);
+            for (int i = 0; i < 150; i++)
+            {
+                Obb3 Box(Vector3D c) => Obb3.FromQuaternion(c, rng.NextDouble() - 0.5, rng.NextDouble() - 0.5, rng.NextDouble() - 0.5, rng.NextDouble() - 0.5,
+                    V(0.1 + rng.NextDouble(), 0.1 + rng.NextDouble(), 0.1 + rng.NextDouble()));
+                var a = Box(V(rng.NextDouble(), rng.NextDouble(), rng.NextDouble()));
+                var inside = a.Center + a.AxisX * ((rng.NextDouble() * 2 - 1) * a.HalfExtents.X) + a.AxisY * ((rng.NextDouble() * 2 - 1) * a.HalfExtents.Y)
+                    + a.AxisZ * ((rng.NextDouble() * 2 - 1) * a.HalfExtents.Z);
+                var b = Box(inside);
+                var r = ClosestDistance.Between(a, b);
+                Assert.That(Exactly.Error(a, b, r.Distance), Is.LessThanOrEqualTo(32), $"case {i}");
+                Assert.That(BitConverter.DoubleToInt64Bits(ClosestDistance.Distance(a, b)), Is.EqualTo(BitConverter.DoubleToInt64Bits(r.Distance)), $"case {i}: distance alone");
+                Assert.That(BitConverter.DoubleToInt64Bits(ClosestDistance.Distance(b, a)), Is.EqualTo(BitConverter.DoubleToInt64Bits(r.Distance)), $"case {i}: swapped");
+                Assert.That((r.PointB - r.PointA).Length, Is.EqualTo(-r.Distance).Within(1e-12), $"case {i}: push length");
+                AssertPushOutTouches(a, b, r);
+            }
+        }
+
         /// <summary>Moving A by PointB − PointA must leave the boxes touching: exact signed distance ≈ 0 afterwards.</summary>
         private static void AssertPushOutTouches(Obb3 a, Obb3 b, DistanceResult3 r)
         {

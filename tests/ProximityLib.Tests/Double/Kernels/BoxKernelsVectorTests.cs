@@ -53,6 +53,30 @@ namespace ProximityTests.Double.Kernels
             }
         }
 
+        /// <summary>
+        /// The overlap entries that make their vectors from the shapes' fields give the verdict and the range flag of the
+        /// test on the shapes' <see cref="Box"/> forms, at unit scale and at scales outside the fast range.
+        /// </summary>
+        [TestCase(1.0)]
+        [TestCase(1e-140)]
+        [TestCase(1e140)]
+        public void OverlapEntriesFromTheShapesMatchTheBoxForms(double scale)
+        {
+            if (!System.Runtime.Intrinsics.X86.Avx2.IsSupported) Assert.Ignore("no AVX2: only the scalar form runs here");
+            var r = new Random(29);
+            for (int i = 0; i < 2000; i++)
+            {
+                var a = RandomBox(r, 3, scale);
+                var b = RandomBox(r, 3, scale);
+                var min = new Vector3D(r.NextDouble(), r.NextDouble(), r.NextDouble()) * (2 * scale);
+                var c = new Aabb3(min, min + new Vector3D(0.1 + r.NextDouble(), 0.1 + r.NextDouble(), 0.1 + r.NextDouble()) * scale);
+                bool obb = ProximityLib.Double.Kernels.BoxBoxOverlaps(a.ToBox(), b.ToBox(), out bool obbIn);
+                Assert.That(ProximityLib.Double.Kernels.ObbObbOverlapsVector(a, b), Is.EqualTo((obb ? 1 : 0) | (obbIn ? 2 : 0)), $"case {i}: OBB–OBB");
+                bool aabb = ProximityLib.Double.Kernels.BoxBoxOverlaps(c.ToBox(), b.ToBox(), out bool aabbIn);
+                Assert.That(ProximityLib.Double.Kernels.AabbObbOverlapsVector(c, b), Is.EqualTo((aabb ? 1 : 0) | (aabbIn ? 2 : 0)), $"case {i}: AABB–OBB");
+            }
+        }
+
         /// <summary>The penetration depth search on AVX2 lanes makes the scalar form's operations per axis: the same bits.</summary>
         [Test]
         public void PenetrationMatchesTheScalarFormBitForBit()
@@ -111,6 +135,64 @@ namespace ProximityTests.Double.Kernels
                 Assert.That(BitConverter.DoubleToInt64Bits(vector), Is.EqualTo(BitConverter.DoubleToInt64Bits(scalar)), $"case {i}: gap");
                 Assert.That(winV, Is.EqualTo(winS), $"case {i}: corner");
                 Assert.That(edgesV, Is.EqualTo(edgesS), $"case {i}: edges");
+            }
+        }
+
+        /// <summary>
+        /// The planar corner stage on AVX2 lanes against its scalar form: the same least squared gap (bits) and the same
+        /// corner, for corners inside, outside and on the other box's sides (grid values make exact ties).
+        /// </summary>
+        [Test]
+        public void PlanarCornersMatchTheScalarFormBitForBit()
+        {
+            if (!System.Runtime.Intrinsics.X86.Avx2.IsSupported) Assert.Ignore("no AVX2: only the scalar form runs here");
+            var r = new Random(17);
+            for (int i = 0; i < 4000; i++)
+            {
+                bool grid = i % 2 == 0;
+                Vector2D G(double s)
+                {
+                    var v = new Vector2D(r.NextDouble() - 0.5, r.NextDouble() - 0.5) * s;
+                    return grid ? new Vector2D(Math.Round(v.X * 4) / 4, Math.Round(v.Y * 4) / 4) : v;
+                }
+                Vector2D Abs(Vector2D v) => new Vector2D(Math.Abs(v.X), Math.Abs(v.Y));
+                Vector2D pa = G(4), dx = G(2), dy = G(2), pb = G(4), ex = G(2), ey = G(2);
+                Vector2D loA = -Abs(G(2)), hiA = Abs(G(2)), loB = -Abs(G(2)), hiB = Abs(G(2));
+                double scalar = ProximityLib.Double.Kernels.Corners2Scalar(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, out int winS);
+                double vector = ProximityLib.Double.Kernels.Corners2Vector(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, out int winV);
+                Assert.That(BitConverter.DoubleToInt64Bits(vector), Is.EqualTo(BitConverter.DoubleToInt64Bits(scalar)), $"case {i}: gap");
+                Assert.That(winV, Is.EqualTo(winS), $"case {i}: corner");
+            }
+        }
+
+        /// <summary>
+        /// The planar box–box query on AVX2 lanes (corners and the depth search) against the planar boxes run through the
+        /// 3D kernel with its scalar steps: the same distance bits and witnesses, overlapping, apart and tied.
+        /// </summary>
+        [Test]
+        public void PlanarKernelMatchesTheThreeDimensionalOne()
+        {
+            var r = new Random(23);
+            for (int i = 0; i < 3000; i++)
+            {
+                var a = new Obb2(new Vector2D(r.NextDouble() * 3, r.NextDouble() * 3), (i % 3 == 0 ? Math.Round(r.NextDouble() * 8) / 4 : r.NextDouble()) * Math.PI,
+                    new Vector2D(0.2 + r.NextDouble(), 0.2 + r.NextDouble()));
+                var b = i % 5 == 0 ? a : new Obb2(new Vector2D(r.NextDouble() * 3, r.NextDouble() * 3), r.NextDouble() * 7, new Vector2D(0.2 + r.NextDouble(), 0.2 + r.NextDouble()));
+                var c = new Aabb2(new Vector2D(r.NextDouble() * 2, r.NextDouble() * 2), new Vector2D(2 + r.NextDouble(), 2 + r.NextDouble()));
+                Check(a.ToBox2(), b.ToBox2(), a.ToBox(), b.ToBox(), i);
+                Check(c.ToBox2(), b.ToBox2(), c.ToBox(), b.ToBox(), i);
+            }
+
+            static void Check(Box2 a2, Box2 b2, Box a3, Box b3, int i)
+            {
+                var planar = ProximityLib.Double.Kernels.BoxBox2(a2, b2, out bool in2);
+                var lifted = ProximityLib.Double.Kernels.BoxBox(a3, b3, out bool in3).To2();
+                Assert.That(planar.Distance, Is.EqualTo(lifted.Distance), $"case {i}: distance");
+                Assert.That(planar.PointA, Is.EqualTo(lifted.PointA), $"case {i}: point A");
+                Assert.That(planar.PointB, Is.EqualTo(lifted.PointB), $"case {i}: point B");
+                Assert.That(in2, Is.EqualTo(in3), $"case {i}: in range");
+                Assert.That(ProximityLib.Double.Kernels.BoxBoxDistance2(a2, b2, out _), Is.EqualTo(planar.Distance), $"case {i}: distance alone");
+                Assert.That(ProximityLib.Double.Kernels.BoxBoxOverlaps2(a2, b2), Is.EqualTo(ProximityLib.Double.Kernels.BoxBoxOverlapsScalar(a3, b3)), $"case {i}: overlap");
             }
         }
     }

@@ -120,6 +120,9 @@ namespace ProximityLib.Double
 
         // Inlined, as Aabb3.ToBox is.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal Box2 ToBox2() => new Box2(Min, Vector2D.UnitX, Vector2D.UnitY, default, Max - Min);
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal Box ToBox()
         {
             var ext = Max - Min;

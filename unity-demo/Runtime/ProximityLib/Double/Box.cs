@@ -36,4 +36,29 @@ namespace ProximityLib.Double
 
         public Box Translated(Vector3D by) => new Box(Origin + by, X, Y, Z, Lo, Hi, Planar);
     }
+
+    /// <summary>
+    /// The planar box form of the 2D box kernels: Origin + X*u + Y*v with (u, v) in [Lo, Hi]; the same values as the
+    /// planar <see cref="Box"/> without its z parts (which only ever added exact zeros), so both forms give the same
+    /// bits, up to the sign of a zero.
+    /// </summary>
+    internal readonly struct Box2
+    {
+        public readonly Vector2D Origin, X, Y, Lo, Hi;
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public Box2(Vector2D origin, Vector2D x, Vector2D y, Vector2D lo, Vector2D hi)
+        {
+            Origin = origin; X = x; Y = y; Lo = lo; Hi = hi;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public Vector2D ToLocal(Vector2D worldOffset) => new Vector2D(Vector2D.Dot(worldOffset, X), Vector2D.Dot(worldOffset, Y));
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public Vector2D ToWorldOffset(Vector2D local) => X * local.X + Y * local.Y;
+
+        public Vector2D LocalCenter => (Lo + Hi) * 0.5;
+        public Vector2D Half => (Hi - Lo) * 0.5;
+    }
 }

@@ -32,13 +32,21 @@ namespace ProximityLib.Double
         public static DistanceResult2 Between(Obb2 a, Aabb2 b) => Between(b, a).Swapped();
         /// <summary>Signed closest distance between an AABB and an OBB (3D) without the witness points: the Distance of <see cref="Between(Aabb3, Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb3 a, Obb3 b) => Between(a, b).Distance;
+        public static double Distance(Aabb3 a, Obb3 b)
+        {
+            var r = DistanceCore(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b).Distance;
+        }
         /// <summary>Signed closest distance between an OBB and an AABB (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double Distance(Obb3 a, Aabb3 b) => Distance(b, a);
         /// <summary>Signed closest distance between an AABB and an OBB (2D) without the witness points: the Distance of <see cref="Between(Aabb2, Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb2 a, Obb2 b) => Between(a, b).Distance;
+        public static double Distance(Aabb2 a, Obb2 b)
+        {
+            var r = DistanceCore(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b).Distance;
+        }
         /// <summary>Signed closest distance between an OBB and an AABB (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double Distance(Obb2 a, Aabb2 b) => Distance(b, a);
@@ -97,13 +105,13 @@ namespace ProximityLib
         public static DistanceResult2 Between(Obb2 a, Aabb2 b) => Between(b, a).Swapped();
         /// <summary>Signed closest distance between an AABB and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Aabb3, Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Aabb3 a, Obb3 b) => Between(a, b).Distance;
+        public static float Distance(Aabb3 a, Obb3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between an OBB and an AABB (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(Obb3 a, Aabb3 b) => Distance(b, a);
         /// <summary>Signed closest distance between an AABB and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Aabb2, Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Aabb2 a, Obb2 b) => Between(a, b).Distance;
+        public static float Distance(Aabb2 a, Obb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between an OBB and an AABB (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(Obb2 a, Aabb2 b) => Distance(b, a);

@@ -11,19 +11,25 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult3 Core(Obb3 a, Obb3 b, out bool inRange) =>
             Order.Swap(a, b) ? Kernels.BoxBox(b.ToBox(), a.ToBox(), out inRange).Swapped() : Kernels.BoxBox(a.ToBox(), b.ToBox(), out inRange);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static double DistanceCore(Obb3 a, Obb3 b, out bool inRange) =>
+            Order.Swap(a, b) ? Kernels.BoxBoxDistance(b.ToBox(), a.ToBox(), out inRange) : Kernels.BoxBoxDistance(a.ToBox(), b.ToBox(), out inRange);
         /// <summary>Closest distance between an OBB and an OBB (2D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 4 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; when apart, the closed forms on the features that can hold the closest pair (every vertex against the other box; in 3D the edges that descend from both ends).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult2 Core(Obb2 a, Obb2 b, out bool inRange) =>
-            (Order.Swap(a, b) ? Kernels.BoxBox(b.ToBox(), a.ToBox(), out inRange).Swapped() : Kernels.BoxBox(a.ToBox(), b.ToBox(), out inRange)).To2();
+            Order.Swap(a, b) ? Kernels.BoxBox2(b.ToBox2(), a.ToBox2(), out inRange).Swapped() : Kernels.BoxBox2(a.ToBox2(), b.ToBox2(), out inRange);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static double DistanceCore(Obb2 a, Obb2 b, out bool inRange) =>
+            Order.Swap(a, b) ? Kernels.BoxBoxDistance2(b.ToBox2(), a.ToBox2(), out inRange) : Kernels.BoxBoxDistance2(a.ToBox2(), b.ToBox2(), out inRange);
     }
 
     public static partial class ProximityQuery
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Obb3 a, Obb3 b, out bool inRange) =>
-            Order.Swap(a, b) ? Kernels.BoxBoxOverlaps(b.ToBox(), a.ToBox(), out inRange) : Kernels.BoxBoxOverlaps(a.ToBox(), b.ToBox(), out inRange);
+            Order.Swap(a, b) ? Kernels.ObbObbOverlaps(b, a, out inRange) : Kernels.ObbObbOverlaps(a, b, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Obb2 a, Obb2 b, out bool inRange) =>
-            Order.Swap(a, b) ? Kernels.BoxBoxOverlaps(b.ToBox(), a.ToBox(), out inRange) : Kernels.BoxBoxOverlaps(a.ToBox(), b.ToBox(), out inRange);
+            Order.Swap(a, b) ? Kernels.BoxBoxOverlaps2(b.ToBox2(), a.ToBox2(), out inRange) : Kernels.BoxBoxOverlaps2(a.ToBox2(), b.ToBox2(), out inRange);
     }
 }

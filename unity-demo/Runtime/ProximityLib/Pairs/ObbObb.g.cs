@@ -26,10 +26,18 @@ namespace ProximityLib.Double
         }
         /// <summary>Signed closest distance between an OBB and an OBB (3D) without the witness points: the Distance of <see cref="Between(Obb3, Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Obb3 a, Obb3 b) => Between(a, b).Distance;
+        public static double Distance(Obb3 a, Obb3 b)
+        {
+            var r = DistanceCore(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b).Distance;
+        }
         /// <summary>Signed closest distance between an OBB and an OBB (2D) without the witness points: the Distance of <see cref="Between(Obb2, Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Obb2 a, Obb2 b) => Between(a, b).Distance;
+        public static double Distance(Obb2 a, Obb2 b)
+        {
+            var r = DistanceCore(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b).Distance;
+        }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static DistanceResult3 Slow(Obb3 a, Obb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
@@ -73,10 +81,10 @@ namespace ProximityLib
         public static DistanceResult2 Between(Obb2 a, Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Signed closest distance between an OBB and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Obb3, Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb3 a, Obb3 b) => Between(a, b).Distance;
+        public static float Distance(Obb3 a, Obb3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between an OBB and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Obb2, Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb2 a, Obb2 b) => Between(a, b).Distance;
+        public static float Distance(Obb2 a, Obb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
     }
 
     public static partial class ProximityQuery

@@ -20,20 +20,47 @@ namespace ProximityLib.Double
         /// same products and the same sums as the scalar form (only the two minor terms of an edge axis may be added
         /// in the other order), so the verdicts agree up to one rounding in the last additions.
         /// </summary>
-        internal static bool BoxBoxOverlapsVector(in Box a, in Box b)
+        internal static bool BoxBoxOverlapsVector(in Box a, in Box b) =>
+            OverlapsVector(V(a.Origin), V(a.X), V(a.Y), V(a.Z), V(a.Lo), V(a.Hi), V(b.Origin), V(b.X), V(b.Y), V(b.Z), V(b.Lo), V(b.Hi));
+
+        /// <summary>
+        /// <see cref="BoxBoxOverlapsVector(in Box, in Box)"/> on OBBs, and whether their magnitudes allow the fast path,
+        /// with each vector made from the shapes' fields: a caller building two <see cref="Box"/> forms to pass spent
+        /// more than the test (zeroing and copying 150-byte structs). Bit 0: they overlap; bit 1: in range (no out
+        /// parameter, which would pin the caller's local in memory).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        internal static int ObbObbOverlapsVector(in Obb3 a, in Obb3 b)
         {
-            // Each Vector3D field of a Box is three consecutive doubles; lane 3 (the next field) is masked off. The
-            // copies give refs to load from (C# 9 cannot take a ref of an in parameter); they are a few vector moves.
-            Box boxA = a, boxB = b;
-            ref double pa = ref Unsafe.As<Box, double>(ref boxA);
-            ref double pb = ref Unsafe.As<Box, double>(ref boxB);
-            var xyz = Vector256.Create(-1L, -1L, -1L, 0).AsDouble();
-            Vector256<double> oa = Vector256.LoadUnsafe(ref pa, 0) & xyz, ax0 = Vector256.LoadUnsafe(ref pa, 3) & xyz,
-                ay0 = Vector256.LoadUnsafe(ref pa, 6) & xyz, az0 = Vector256.LoadUnsafe(ref pa, 9) & xyz,
-                loA = Vector256.LoadUnsafe(ref pa, 12) & xyz, hiA = Vector256.LoadUnsafe(ref pa, 15) & xyz;
-            Vector256<double> ob = Vector256.LoadUnsafe(ref pb, 0) & xyz, bx0 = Vector256.LoadUnsafe(ref pb, 3) & xyz,
-                by0 = Vector256.LoadUnsafe(ref pb, 6) & xyz, bz0 = Vector256.LoadUnsafe(ref pb, 9) & xyz,
-                loB = Vector256.LoadUnsafe(ref pb, 12) & xyz, hiB = Vector256.LoadUnsafe(ref pb, 15) & xyz;
+            Vector256<double> ha = V(a.HalfExtents), hb = V(b.HalfExtents), oa = V(a.Center), ob = V(b.Center);
+            int inRange = Range.Box(BoxSize(ob - oa, ha - (-ha), hb - (-hb))) ? 2 : 0;
+            return inRange | (OverlapsVector(oa, V(a.AxisX), V(a.AxisY), V(a.AxisZ), -ha, ha, ob, V(b.AxisX), V(b.AxisY), V(b.AxisZ), -hb, hb) ? 1 : 0);
+        }
+
+        /// <summary><see cref="ObbObbOverlapsVector"/> for an AABB (origin Min, [0, Max − Min]) against an OBB.</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        internal static int AabbObbOverlapsVector(in Aabb3 a, in Obb3 b)
+        {
+            Vector256<double> hiA = V(a.Max - a.Min), hb = V(b.HalfExtents), oa = V(a.Min), ob = V(b.Center);
+            int inRange = Range.Box(BoxSize(ob - oa, hiA - Vector256<double>.Zero, hb - (-hb))) ? 2 : 0;
+            return inRange | (OverlapsVector(oa, Vector256.Create(1.0, 0, 0, 0), Vector256.Create(0, 1.0, 0, 0), Vector256.Create(0, 0, 1.0, 0), Vector256<double>.Zero, hiA,
+                ob, V(b.AxisX), V(b.AxisY), V(b.AxisZ), -hb, hb) ? 1 : 0);
+        }
+
+        /// <summary><see cref="Size"/> on lanes 0–2: the largest magnitude of the three.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double BoxSize(Vector256<double> d, Vector256<double> ea, Vector256<double> eb)
+        {
+            var m = Vector256.Max(Vector256.Abs(d), Vector256.Max(Vector256.Abs(ea), Vector256.Abs(eb)));
+            m = Vector256.Max(m, Avx.Permute(m, 0b0101));
+            return Math.Max(m.ToScalar(), m.GetElement(2));
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool OverlapsVector(Vector256<double> oa, Vector256<double> ax0, Vector256<double> ay0, Vector256<double> az0,
+            Vector256<double> loA, Vector256<double> hiA, Vector256<double> ob, Vector256<double> bx0, Vector256<double> by0,
+            Vector256<double> bz0, Vector256<double> loB, Vector256<double> hiB)
+        {
             var ha = (hiA - loA) * 0.5;
             var hb = (hiB - loB) * 0.5;
             var ca = (loA + hiA) * 0.5;
@@ -185,6 +212,45 @@ namespace ProximityLib.Double
             return hits == 0 ? double.PositiveInfinity : m.ToScalar();
         }
 
+        /// <summary>
+        /// <see cref="Corners2Scalar"/> on AVX2 lanes, A's four corners in one vector and B's in another: each lane makes
+        /// the scalar form's operations (a zero added where it adds nothing), so the same bits and the same corner.
+        /// </summary>
+        internal static double Corners2Vector(Vector2D pa, Vector2D dx, Vector2D dy, Vector2D loB, Vector2D hiB,
+            Vector2D pb, Vector2D ex, Vector2D ey, Vector2D loA, Vector2D hiA, out int win)
+        {
+            Vector256<double> rx = Outside(Corners4(pa.X, dx.X, dy.X), loB.X, hiB.X), ry = Outside(Corners4(pa.Y, dx.Y, dy.Y), loB.Y, hiB.Y);
+            Vector256<double> sx = Outside(Corners4(pb.X, ex.X, ey.X), loA.X, hiA.X), sy = Outside(Corners4(pb.Y, ex.Y, ey.Y), loA.Y, hiA.Y);
+            var a = rx * rx + ry * ry;
+            var b = sx * sx + sy * sy;
+            var m = Vector256.Min(a, b);
+            m = Vector256.Min(m, Avx.Permute(m, 0b0101));
+            m = Vector256.Min(m, Avx.Permute2x128(m, m, 1));
+            uint hits = Vector256.Equals(a, m).ExtractMostSignificantBits() | (Vector256.Equals(b, m).ExtractMostSignificantBits() << 4);
+            win = hits == 0 ? 0 : System.Numerics.BitOperations.TrailingZeroCount(hits);
+            return hits == 0 ? double.PositiveInfinity : m.ToScalar();
+        }
+
+        /// <summary>
+        /// The first of the axes (ax, ay, bx, by) holding the least of <see cref="TryAxis2"/>'s push-outs, or −1 when none
+        /// is an axis: per lane (ra + rb − |sep|)/len, exactly the smaller of its down and up.
+        /// </summary>
+        internal static int LeastAxis2(Vector2D ax, Vector2D ay, Vector2D bx, Vector2D by, Vector2D ha, Vector2D hb, Vector2D t)
+        {
+            Vector256<double> x = Vector256.Create(ax.X, ay.X, bx.X, by.X), y = Vector256.Create(ax.Y, ay.Y, bx.Y, by.Y);
+            var len2 = x * x + y * y;
+            var ra = Vector256.Create(ha.X) * Vector256.Abs(Vector256.Create(ax.X) * x + Vector256.Create(ax.Y) * y)
+                + Vector256.Create(ha.Y) * Vector256.Abs(Vector256.Create(ay.X) * x + Vector256.Create(ay.Y) * y);
+            var rb = Vector256.Create(hb.X) * Vector256.Abs(Vector256.Create(bx.X) * x + Vector256.Create(bx.Y) * y)
+                + Vector256.Create(hb.Y) * Vector256.Abs(Vector256.Create(by.X) * x + Vector256.Create(by.Y) * y);
+            var least = (ra + rb - Vector256.Abs(Vector256.Create(t.X) * x + Vector256.Create(t.Y) * y)) / Vector256.Sqrt(len2);
+            least = Vector256.ConditionalSelect(Vector256.GreaterThan(len2, Vector256<double>.Zero), least, Vector256.Create(double.PositiveInfinity));
+            var m = Vector256.Min(least, Avx.Permute(least, 0b0101));
+            m = Vector256.Min(m, Avx.Permute2x128(m, m, 1));
+            uint hits = Vector256.Equals(least, m).ExtractMostSignificantBits();
+            return hits == 0 ? -1 : System.Numerics.BitOperations.TrailingZeroCount(hits);
+        }
+
         /// <summary>Bit c: the slope dir·r is negative at corner c and positive at corner c + step (residuals of corners 0–3, 4–7).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static uint Descending(Vector3D dir, Vector256<double> rx0, Vector256<double> ry0, Vector256<double> rz0,
@@ -216,6 +282,10 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Vector256<double> Outside(Vector256<double> e, double lo, double hi) =>
             Vector256.Min(e - Vector256.Create(lo), Vector256<double>.Zero) + Vector256.Max(e - Vector256.Create(hi), Vector256<double>.Zero);
+
+        /// <summary>(v.X, v.Y, v.Z, 0).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector256<double> V(Vector3D v) => Vector256.Create(v.X, v.Y, v.Z, 0);
 
         /// <summary>Lane i of v in every lane.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

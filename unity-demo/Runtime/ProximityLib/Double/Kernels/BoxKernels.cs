@@ -53,6 +53,26 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
+        /// The distance of <see cref="BoxBox"/> alone: the same steps, without the witness search of overlapping boxes
+        /// unless the depth search found a separation (then its gap is the answer, as there, from the same search).
+        /// </summary>
+        public static double BoxBoxDistance(in Box a, in Box b, out bool inRange)
+        {
+            inRange = Range.Box(Size(a, b));
+            var d = b.Origin - a.Origin;
+            if (BoxBoxOverlaps(a, b))
+            {
+                var ca = a.ToWorldOffset(a.LocalCenter);
+                var cb = d + b.ToWorldOffset(b.LocalCenter);
+                double depth = Penetration(a, b, cb - ca, out _);
+                if (depth >= 0) return -depth;
+            }
+            double gap = BoxesApart(a, default, b, d, 0, out _, out _);
+            inRange &= gap == 0 || Range.In(gap);
+            return Math.Sqrt(gap);
+        }
+
+        /// <summary>
         /// The least translation of A that clears B (returned as <paramref name="push"/>, its length returned) over the
         /// face normals and, in 3D, the edge × edge directions; negative when some axis separates (the push is then unused).
         /// Each axis's projections are formed on the axis as it is and divided by its length once (instead of normalising
@@ -160,10 +180,16 @@ namespace ProximityLib.Double
             var ez = bz * eb.Z;
             var pb = a.ToLocal(d) + bx * loB.X + by * loB.Y + bz * loB.Z;
 
-            // Every vertex against the other box, and the edges of A to minimise (bit 8i + c: the edge from corner c along
-            // axis i). win: 0–7 A's corner, 8–15 B's corner, 16 + 8i + c that edge.
-            double best = Vertices(pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA, planar, out int win, out uint edges);
-            double winT = 0;
+            // win: 0–7 A's corner, 8–15 B's corner, 16 + 8i + c the edge from corner c along axis i.
+            int win;
+            double best, winT = 0;
+            uint edges;
+            if (enough > 0 && !planar && Touching(originA, a, b, pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA, enough, out best, out win, out winT))
+                edges = 0;
+            else
+                // Every vertex against the other box, and the edges of A to minimise (bit 8i + c: the edge from corner c
+                // along axis i).
+                best = Vertices(pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA, planar, out win, out edges);
             // Those whose lower bound does not exceed the best pair, until the best is good enough.
             for (int bit = 0; edges >> bit != 0 && best > enough; bit++)
             {
@@ -198,6 +224,38 @@ namespace ProximityLib.Double
                 onB = originB + b.ToWorldOffset(Clamp(Corner(pa, dx, dy, dz, from) + dir * winT, loB, hiB));
             }
             return best;
+        }
+
+        /// <summary>
+        /// A moved by <paramref name="push"/> (the depth search's) just touches B: the contact is at A's support feature
+        /// in direction −push and B's in direction +push. Tries A's support corner against box B and B's against box A
+        /// (the first of equal ones, A's first, as <see cref="Vertices"/> orders them), then A's edge through its corner
+        /// along the axis most nearly across the push (an edge–edge contact); true with that pair when its squared gap is
+        /// at most <paramref name="enough"/> (the touching configuration's rounding), false to search every feature.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static bool Touching(Vector3D push, in Box a, in Box b, Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
+            Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA, double enough, out double best, out int win, out double winT)
+        {
+            double px = Vector3D.Dot(push, a.X), py = Vector3D.Dot(push, a.Y), pz = Vector3D.Dot(push, a.Z);
+            int ca = (px < 0 ? 1 : 0) | (py < 0 ? 2 : 0) | (pz < 0 ? 4 : 0);
+            int cb = (Vector3D.Dot(push, b.X) > 0 ? 1 : 0) | (Vector3D.Dot(push, b.Y) > 0 ? 2 : 0) | (Vector3D.Dot(push, b.Z) > 0 ? 4 : 0);
+            var p = Corner(pa, dx, dy, dz, ca);
+            best = Residual(p, loB, hiB).LengthSquared;
+            win = ca;
+            winT = 0;
+            double g = Residual(Corner(pb, ex, ey, ez, cb), loA, hiA).LengthSquared;
+            if (g < best) { best = g; win = 8 + cb; }
+            if (best <= enough) return true;
+            double ax = Math.Abs(px), ay = Math.Abs(py), az = Math.Abs(pz);
+            int i = ax <= ay && ax <= az ? 0 : (ay <= az ? 1 : 2);
+            int from = ca & ~(1 << i);
+            g = SegmentBoxLocal(Corner(pa, dx, dy, dz, from), i == 0 ? dx : (i == 1 ? dy : dz), loB, hiB, out double t);
+            if (!(g <= enough)) return false;
+            best = g;
+            win = 16 + 8 * i + from;
+            winT = t;
+            return true;
         }
 
         /// <summary>
@@ -305,6 +363,36 @@ namespace ProximityLib.Double
         {
             inRange = Range.Box(Size(a, b));
             return BoxBoxOverlaps(a, b);
+        }
+
+        /// <summary><see cref="BoxBoxOverlaps(in Box, in Box, out bool)"/> for two OBBs, on AVX2 without building their <see cref="Box"/> forms.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool ObbObbOverlaps(in Obb3 a, in Obb3 b, out bool inRange)
+        {
+#if NET
+            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported)
+            {
+                int r = ObbObbOverlapsVector(a, b);
+                inRange = (r & 2) != 0;
+                return (r & 1) != 0;
+            }
+#endif
+            return BoxBoxOverlaps(a.ToBox(), b.ToBox(), out inRange);
+        }
+
+        /// <summary><see cref="BoxBoxOverlaps(in Box, in Box, out bool)"/> for an AABB and an OBB, on AVX2 without building their <see cref="Box"/> forms.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool AabbObbOverlaps(in Aabb3 a, in Obb3 b, out bool inRange)
+        {
+#if NET
+            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported)
+            {
+                int r = AabbObbOverlapsVector(a, b);
+                inRange = (r & 2) != 0;
+                return (r & 1) != 0;
+            }
+#endif
+            return BoxBoxOverlaps(a.ToBox(), b.ToBox(), out inRange);
         }
 
         /// <summary>

@@ -1,0 +1,223 @@
+using System;
+using System.Runtime.CompilerServices;
+
+namespace ProximityLib.Double
+{
+    internal static partial class Kernels
+    {
+        /// <summary>
+        /// Box against box in the plane: <see cref="BoxBox"/> on planar boxes with its z parts dropped (they only added
+        /// exact zeros), so the same steps and the same bits up to the sign of a zero. Overlap by the four face axes;
+        /// apart, the least of the eight vertex–box clamps (in 2D the closest pair always has a vertex of one box, so no
+        /// edge closed form is needed); overlapping, the least push-out over the four face axes, then the same vertex
+        /// search on A moved by it.
+        /// </summary>
+        public static DistanceResult2 BoxBox2(in Box2 a, in Box2 b, out bool inRange)
+        {
+            inRange = Range.Box(Size2(a, b));
+            var shift = a.Origin;
+            var d = b.Origin - shift;
+            Vector2D onA, onB;
+            if (!BoxBoxOverlaps2(a, b))
+            {
+                double gap = BoxesApart2(a, default, b, d, out onA, out onB);
+                inRange &= gap == 0 || Range.In(gap);
+                return new DistanceResult2(Math.Sqrt(gap), gap, onA + shift, onB + shift, 0, 0);
+            }
+            var ca = a.ToWorldOffset(a.LocalCenter);
+            var cb = d + b.ToWorldOffset(b.LocalCenter);
+            double depth = Penetration2(a, b, cb - ca, out var push);
+            if (depth < 0) push = default;
+            double g = BoxesApart2(a, push, b, d, out onA, out onB);
+            onA = onA - push + shift;
+            onB += shift;
+            if (depth < 0)
+            {
+                inRange &= g == 0 || Range.In(g);
+                return new DistanceResult2(Math.Sqrt(g), g, onA, onB, 0, 0);
+            }
+            return new DistanceResult2(-depth, 0, onA, onB, 0, 0);
+        }
+
+        /// <summary>
+        /// The distance of <see cref="BoxBox2"/> alone: the same steps, without the witness search of overlapping boxes
+        /// unless the depth search found a separation (then its gap is the answer, as there).
+        /// </summary>
+        public static double BoxBoxDistance2(in Box2 a, in Box2 b, out bool inRange)
+        {
+            inRange = Range.Box(Size2(a, b));
+            var shift = a.Origin;
+            var d = b.Origin - shift;
+            if (BoxBoxOverlaps2(a, b))
+            {
+                var ca = a.ToWorldOffset(a.LocalCenter);
+                var cb = d + b.ToWorldOffset(b.LocalCenter);
+                double depth = Penetration2(a, b, cb - ca, out _);
+                if (depth >= 0) return -depth;
+            }
+            double gap = BoxesApart2(a, default, b, d, out _, out _);
+            inRange &= gap == 0 || Range.In(gap);
+            return Math.Sqrt(gap);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Size2(in Box2 a, in Box2 b) =>
+            Math.Max(MaxAbs(b.Origin - a.Origin), Math.Max(MaxAbs(a.Hi - a.Lo), MaxAbs(b.Hi - b.Lo)));
+
+        /// <summary><see cref="BoxBoxOverlaps2(in Box2, in Box2)"/>, with whether the boxes' magnitudes allow the fast path.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool BoxBoxOverlaps2(in Box2 a, in Box2 b, out bool inRange)
+        {
+            inRange = Range.Box(Size2(a, b));
+            return BoxBoxOverlaps2(a, b);
+        }
+
+        /// <summary>The planar case of <see cref="BoxBoxOverlapsScalar"/>: the four face axes, in A's frame.</summary>
+        public static bool BoxBoxOverlaps2(in Box2 a, in Box2 b)
+        {
+            var tw = (b.Origin - a.Origin) + b.ToWorldOffset(b.LocalCenter) - a.ToWorldOffset(a.LocalCenter);
+            double tx = Vector2D.Dot(tw, a.X), ty = Vector2D.Dot(tw, a.Y);
+            double r00 = Vector2D.Dot(a.X, b.X), r01 = Vector2D.Dot(a.X, b.Y);
+            double r10 = Vector2D.Dot(a.Y, b.X), r11 = Vector2D.Dot(a.Y, b.Y);
+            var ha = a.Half;
+            var hb = b.Half;
+            double q00 = Math.Abs(r00), q01 = Math.Abs(r01), q10 = Math.Abs(r10), q11 = Math.Abs(r11);
+            return !(Math.Abs(tx) > ha.X + hb.X * q00 + hb.Y * q01)
+                & !(Math.Abs(ty) > ha.Y + hb.X * q10 + hb.Y * q11)
+                & !(Math.Abs(tx * r00 + ty * r10) > ha.X * q00 + ha.Y * q10 + hb.X)
+                & !(Math.Abs(tx * r01 + ty * r11) > ha.X * q01 + ha.Y * q11 + hb.Y);
+        }
+
+        /// <summary>The planar case of <see cref="Penetration"/>: A's and B's face normals, in that order.</summary>
+        private static double Penetration2(in Box2 a, in Box2 b, Vector2D t, out Vector2D push)
+        {
+            Vector2D ax = a.X, ay = a.Y, bx = b.X, by = b.Y, ha = a.Half, hb = b.Half;
+            double best = double.PositiveInfinity, scale = 0;
+            Vector2D axis = default;
+#if NET
+            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported)
+            {
+                // The first axis holding the least push-out, then that axis alone in the scalar steps: the same bits.
+                int first = LeastAxis2(ax, ay, bx, by, ha, hb, t);
+                if (first >= 0)
+                    TryAxis2(first == 0 ? ax : first == 1 ? ay : first == 2 ? bx : by, ax, ay, bx, by, ha, hb, t, ref best, ref axis, ref scale);
+                push = axis * scale;
+                return best;
+            }
+#endif
+            TryAxis2(ax, ax, ay, bx, by, ha, hb, t, ref best, ref axis, ref scale);
+            TryAxis2(ay, ax, ay, bx, by, ha, hb, t, ref best, ref axis, ref scale);
+            TryAxis2(bx, ax, ay, bx, by, ha, hb, t, ref best, ref axis, ref scale);
+            TryAxis2(by, ax, ay, bx, by, ha, hb, t, ref best, ref axis, ref scale);
+            push = axis * scale;
+            return best;
+        }
+
+        /// <summary>The planar <see cref="TryAxis"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void TryAxis2(Vector2D v, Vector2D ax, Vector2D ay, Vector2D bx, Vector2D by, Vector2D ha, Vector2D hb, Vector2D t,
+            ref double best, ref Vector2D axis, ref double scale)
+        {
+            double len2 = v.LengthSquared;
+            if (!(len2 > 0)) return;
+            double len = Math.Sqrt(len2);
+            double ra = ha.X * Math.Abs(Vector2D.Dot(ax, v)) + ha.Y * Math.Abs(Vector2D.Dot(ay, v));
+            double rb = hb.X * Math.Abs(Vector2D.Dot(bx, v)) + hb.Y * Math.Abs(Vector2D.Dot(by, v));
+            double sep = Vector2D.Dot(t, v);
+            double down = (ra + rb - sep) / len, up = (ra + rb + sep) / len;
+            if (down < best) { best = down; axis = v; scale = -down / len; }
+            if (up < best) { best = up; axis = v; scale = up / len; }
+        }
+
+        /// <summary>
+        /// The planar <see cref="BoxesApart"/>: the least squared gap of A's four corners to box B (in B's frame) and of
+        /// B's four corners to box A (the first of equal ones, A's before B's), and the pair realising it in world
+        /// coordinates (relative to the common origin the caller subtracted).
+        /// </summary>
+        private static double BoxesApart2(in Box2 a, Vector2D originA, in Box2 b, Vector2D originB, out Vector2D onA, out Vector2D onB)
+        {
+            var ax = b.ToLocal(a.X);
+            var ay = b.ToLocal(a.Y);
+            var bx = new Vector2D(ax.X, ay.X);
+            var by = new Vector2D(ax.Y, ay.Y);
+            var d = originB - originA;
+            Vector2D loA = a.Lo, hiA = a.Hi, loB = b.Lo, hiB = b.Hi;
+            var ea = hiA - loA;
+            var eb = hiB - loB;
+            var dx = ax * ea.X;
+            var dy = ay * ea.Y;
+            var pa = b.ToLocal(-d) + ax * loA.X + ay * loA.Y;
+            var ex = bx * eb.X;
+            var ey = by * eb.Y;
+            var pb = a.ToLocal(d) + bx * loB.X + by * loB.Y;
+            var pa1 = pa + dx;
+            var pb1 = pb + ex;
+
+            double best = Corners2(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, out int win);
+
+            int c = win & 3;
+            if (win < 4)
+            {
+                var p = (c & 1) != 0 ? pa1 : pa;
+                if ((c & 2) != 0) p += dy;
+                onA = originA + a.ToWorldOffset(new Vector2D((c & 1) != 0 ? hiA.X : loA.X, (c & 2) != 0 ? hiA.Y : loA.Y));
+                onB = originB + b.ToWorldOffset(new Vector2D(Num.Clamp(p.X, loB.X, hiB.X), Num.Clamp(p.Y, loB.Y, hiB.Y)));
+            }
+            else
+            {
+                var p = (c & 1) != 0 ? pb1 : pb;
+                if ((c & 2) != 0) p += ey;
+                onB = originB + b.ToWorldOffset(new Vector2D((c & 1) != 0 ? hiB.X : loB.X, (c & 2) != 0 ? hiB.Y : loB.Y));
+                onA = originA + a.ToWorldOffset(new Vector2D(Num.Clamp(p.X, loA.X, hiA.X), Num.Clamp(p.Y, loA.Y, hiA.Y)));
+            }
+            return best;
+        }
+
+        /// <summary>
+        /// The least squared gap of A's corners (pa + sums of dx, dy; B's frame) to B's box and of B's corners (pb + sums
+        /// of ex, ey; A's frame) to A's box, and which corner holds it (0–3 A's, 4–7 B's; bit 0 adds the x edge, bit 1
+        /// the y edge, as (p + dx) + dy; the first of equal ones).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Corners2(Vector2D pa, Vector2D dx, Vector2D dy, Vector2D loB, Vector2D hiB,
+            Vector2D pb, Vector2D ex, Vector2D ey, Vector2D loA, Vector2D hiA, out int win)
+        {
+#if NET
+            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported) return Corners2Vector(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, out win);
+#endif
+            return Corners2Scalar(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, out win);
+        }
+
+        /// <summary>The scalar form of <see cref="Corners2"/>: the only one on netstandard2.1 (Unity) and without AVX2.</summary>
+        internal static double Corners2Scalar(Vector2D pa, Vector2D dx, Vector2D dy, Vector2D loB, Vector2D hiB,
+            Vector2D pb, Vector2D ex, Vector2D ey, Vector2D loA, Vector2D hiA, out int win)
+        {
+            var pa1 = pa + dx;
+            var pb1 = pb + ex;
+            double best = Gap2(pa, loB, hiB);
+            win = 0;
+            Least(Gap2(pa1, loB, hiB), 1, ref best, ref win);
+            Least(Gap2(pa + dy, loB, hiB), 2, ref best, ref win);
+            Least(Gap2(pa1 + dy, loB, hiB), 3, ref best, ref win);
+            Least(Gap2(pb, loA, hiA), 4, ref best, ref win);
+            Least(Gap2(pb1, loA, hiA), 5, ref best, ref win);
+            Least(Gap2(pb + ey, loA, hiA), 6, ref best, ref win);
+            Least(Gap2(pb1 + ey, loA, hiA), 7, ref best, ref win);
+            return best;
+        }
+
+        /// <summary>The squared length of p − clamp(p) against the box [lo, hi] (box-local).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Gap2(Vector2D p, Vector2D lo, Vector2D hi)
+        {
+            double x = Outside(p.X, lo.X, hi.X), y = Outside(p.Y, lo.Y, hi.Y);
+            return x * x + y * y;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void Least(double g, int which, ref double best, ref int win)
+        {
+            if (g < best) { best = g; win = which; }
+        }
+    }
+}
