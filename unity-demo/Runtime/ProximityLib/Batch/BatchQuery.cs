@@ -193,8 +193,40 @@ namespace ProximityLib.Batch
                 new Vector<float>(_b.MaxX, i), new Vector<float>(_b.MaxY, i), new Vector<float>(_b.MaxZ, i), _margin);
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            public float Lane(int i) => PointBox(_a.XAt(i), _a.YAt(i), _a.ZAt(i), _a.RAt(i),
-                _b.MinX[i], _b.MinY[i], _b.MinZ[i], _b.MaxX[i], _b.MaxY[i], _b.MaxZ[i], _margin);
+            public float Lane(int i) => _margin
+                ? Margin(_a.XAt(i), _a.YAt(i), _a.ZAt(i), _a.RAt(i), i)
+                : PointBox(_a.XAt(i), _a.YAt(i), _a.ZAt(i), _a.RAt(i), _b.MinX[i], _b.MinY[i], _b.MinZ[i], _b.MaxX[i], _b.MaxY[i], _b.MaxZ[i], false);
+
+            /// <summary>
+            /// The margin value of lane i, which only verdicts read. Its sign is the vector lane's, found without the
+            /// clamps' branches where that is cheap, because on Mono they mispredicted on mixed inputs and one-to-many
+            /// verdicts ran 3× slower than the scalar API. For r² = 0 (points) the value d2 is ≤ 0 exactly when every
+            /// axis's squared gap is 0, which two subtractions and comparisons per axis give; otherwise the sums (in the vector order) stop at the
+            /// first axis whose partial sum exceeds r²: the sum only grows, so the sign is the full sum's.
+            /// </summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private float Margin(float px, float py, float pz, float r, int i)
+            {
+                float rr = r * r;
+                if (rr == 0) return Inside(px, _b.MinX[i], _b.MaxX[i]) & Inside(py, _b.MinY[i], _b.MaxY[i]) & Inside(pz, _b.MinZ[i], _b.MaxZ[i]) ? 0 : 1;
+                float dx = px - Runner.Clamp(px, _b.MinX[i], _b.MaxX[i]);
+                float d2 = dx * dx;
+                if (d2 > rr) return d2 - rr;
+                float dy = py - Runner.Clamp(py, _b.MinY[i], _b.MaxY[i]);
+                d2 += dy * dy;
+                if (d2 > rr) return d2 - rr;
+                float dz = pz - Runner.Clamp(pz, _b.MinZ[i], _b.MaxZ[i]);
+                return d2 + dz * dz - rr;
+            }
+
+            /// <summary>
+            /// Whether p − clamp(p, lo, hi) squares to 0 in float: the difference is at most 2^-75 in magnitude (its square
+            /// is then at most 2^-150, which rounds to 0, ties to even; any larger float difference squares to 2^-149 or more).
+            /// </summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static bool Inside(float p, float lo, float hi) => (p - lo >= -SquaresToZero) & (p - hi <= SquaresToZero);
+
+            private const float SquaresToZero = 1f / (1L << 62) / (1 << 13);
         }
 
         private struct SphereObb<TS> : IKernel where TS : struct, ISpheres
@@ -474,16 +506,19 @@ namespace ProximityLib.Batch
                 return Vector.Max(gx, Vector.Max(gy, gz));
             }
 
-            /// <summary>The same gaps, stopping at the first that is not ≤ 0.</summary>
+            /// <summary>
+            /// −1 where every gap is ≤ 0, else 1: a gap lo − hi of two floats is ≤ 0 exactly when lo ≤ hi (a difference of
+            /// floats is zero only when they are equal), so the six comparisons give the vector verdict. They are joined
+            /// without short-circuit: on Mono, branching on each one mispredicted on mixed inputs and made the one-to-many
+            /// verdicts slower than the scalar API.
+            /// </summary>
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             public float Lane(int i)
             {
                 _a.CornersAt(i, out var minX, out var minY, out var minZ, out var maxX, out var maxY, out var maxZ);
-                float gap;
-                if (!((gap = _b.MinX[i] - maxX) <= 0) || !((gap = minX - _b.MaxX[i]) <= 0)) return gap;
-                if (!((gap = _b.MinY[i] - maxY) <= 0) || !((gap = minY - _b.MaxY[i]) <= 0)) return gap;
-                if (!((gap = _b.MinZ[i] - maxZ) <= 0) || !((gap = minZ - _b.MaxZ[i]) <= 0)) return gap;
-                return gap;
+                bool touch = (_b.MinX[i] <= maxX) & (minX <= _b.MaxX[i]) & (_b.MinY[i] <= maxY) & (minY <= _b.MaxY[i])
+                    & (_b.MinZ[i] <= maxZ) & (minZ <= _b.MaxZ[i]);
+                return touch ? -1 : 1;
             }
         }
     }
