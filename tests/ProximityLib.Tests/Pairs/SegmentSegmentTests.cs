@@ -169,6 +169,29 @@ namespace ProximityTests.Pairs
             }
         }
 
+        /// <summary>
+        /// Two crossing segments of length 1e-100 one unit apart: |d0 × d1|² (1e-400) and |d0|²|d1|² both underflow to 0,
+        /// so the conditioning test alone (0 ≥ 1e-4·0) once took them for well conditioned and divided 0 by 0. Hand-worked:
+        /// the closest pair is A's end (1e-100, 0, 0) and B's start (1, 0, 0), 1 − 1e-100 apart, which rounds to 1 (so A's
+        /// start, exactly 1 away, ties with its end; B's point is its start either way).
+        /// </summary>
+        [Test]
+        public void TinyCrossingSegmentsFarApartAreNotNaN()
+        {
+            var a = new Segment3(V(0, 0, 0), V(1e-100, 0, 0));
+            var b = new Segment3(V(1, 0, 0), V(1, 1e-100, 0));
+            foreach (var (x, y) in new[] { (a, b), (b, a) })
+            {
+                var r = ClosestDistance.Between(x, y);
+                Assert.That(r.Distance, Is.EqualTo(1.0));
+                Assert.That(ClosestDistance.Distance(x, y), Is.EqualTo(1.0));
+                Assert.That(ProximityQuery.Overlaps(x, y), Is.False);
+            }
+            var ab = ClosestDistance.Between(a, b);
+            Assert.That((ab.ParameterB, ab.PointB), Is.EqualTo((0.0, V(1, 0, 0))));
+            Assert.That(ClosestDistance.Distance(new Segment2(V(0, 0), V(1e-100, 0)), new Segment2(V(1, 0), V(1, 1e-100))), Is.EqualTo(1.0));
+        }
+
         private static Vector3D Unit(Vector3D v) => v / v.Length;
 
         private static Vector3D Unit(Random rng)

@@ -31,8 +31,8 @@ namespace ProximityLib.Double
     public static partial class ProximityQuery
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Segment3 a, Segment3 b, out bool inRange) => Kernels.SegmentSegmentCore(a.Start, a.End, b.Start, b.End, out _, out _, out inRange) == 0;
+        internal static bool Core(Segment3 a, Segment3 b, out bool inRange) => Kernels.SegmentSegmentInline(a.Start, a.End, b.Start, b.End, out _, out _, out inRange) == 0;
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Segment2 a, Segment2 b, out bool inRange) => Kernels.SegmentSegmentCore(a.Start.To3(), a.End.To3(), b.Start.To3(), b.End.To3(), out _, out _, out inRange) == 0;
+        internal static bool Core(Segment2 a, Segment2 b, out bool inRange) => Kernels.SegmentSegmentInline(a.Start.To3(), a.End.To3(), b.Start.To3(), b.End.To3(), out _, out _, out inRange) == 0;
     }
 }

@@ -22,55 +22,95 @@ namespace ProximityLib.Double
         /// instead, so the swapped answer is this one with s and t exchanged, bit for bit. Only exact ties fall back to
         /// the canonical order (<see cref="Order"/>).
         /// </summary>
-        public static double SegmentSegmentCore(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, out double s, out double t, out bool inRange)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double SegmentSegmentInline(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, out double s, out double t, out bool inRange)
         {
             var d0 = a1 - a0;
             var d1 = b1 - b0;
             var w = b0 - a0;
             double a = d0.LengthSquared, e = d1.LengthSquared, size2 = a + e + w.LengthSquared;
-            // The configuration's squared size in the fast range, or every point the same; and below, the squared distance
-            // in it too or exactly 0 (a subnormal one would have lost bits, and 2^k-scaled inputs would not agree).
-            bool sized = Range.In(size2) || (size2 == 0 && a0 == a1 && b0 == b1 && a0 == b0);
-            double b = Vector3D.Dot(d0, d1), c = -Vector3D.Dot(d0, w), f = -Vector3D.Dot(d1, w);
-            if (a == 0 || e == 0)
-            {
-                // A point against a segment (or a point).
-                if (a == 0 && e == 0) { s = 0; t = 0; return Residual(d0, d1, w, 0, 0, sized, out inRange); }
-                if (a == 0) { s = 0; t = Num.Clamp(f / e, 0, 1); }
-                else { t = 0; s = Num.Clamp(-c / a, 0, 1); }
-                return Residual(d0, d1, w, s, t, sized, out inRange);
-            }
-
             double k = InverseSizeScale(size2);
             var d0k = d0 * k;
             var d1k = d1 * k;
             var wk = w * k;
             var n = Vector3D.Cross(d0k, d1k);
             double nn = n.LengthSquared;
-            double si = nn > 0 ? Vector3D.Dot(Vector3D.Cross(wk, d1k), n) / nn : 0;
-            double ti = nn > 0 ? Vector3D.Dot(Vector3D.Cross(wk, d0k), n) / nn : 0;
+            // The lines' closest parameters are si = sNum / nn and ti = tNum / nn.
+            double sNum = Vector3D.Dot(Vector3D.Cross(wk, d1k), n), tNum = Vector3D.Dot(Vector3D.Cross(wk, d0k), n);
 
-            // Well conditioned (sin²θ ≥ 1e-4; the product is formed first so the test is the same in either order).
-            if (nn >= 1e-4 * (d0k.LengthSquared * d1k.LengthSquared))
+            // Two segments of positive length (a point has n = 0 without being parallel), well conditioned (sin²θ ≥ 1e-4;
+            // the product is formed first so the test is the same in either order) and |n|² not 0 (two segments tiny
+            // beside their distance can underflow it and the lengths' product alike). Everything else is rare and goes
+            // out of line, returning a struct: an out argument would pin this path's s and t in memory.
+            if (a == 0 || e == 0 || !(nn > 0 && nn >= 1e-4 * (d0k.LengthSquared * d1k.LengthSquared)))
             {
-                if (si >= 0 && si <= 1 && ti >= 0 && ti <= 1)
-                {
-                    // The gap between the lines, (w·n)²/|n|², carries no error from (s, t); crossing 2D segments give
-                    // exactly 0.
-                    s = si; t = ti;
-                    double wn = Vector3D.Dot(wk, n), gap2 = wn * wn / nn / k / k;
-                    inRange = sized && (wn == 0 || Range.In(gap2));
-                    return gap2;
-                }
-                double outS = Math.Max(-si, si - 1), outT = Math.Max(-ti, ti - 1);
-                if (outS > outT || (outS == outT && !Order.Swap(a0, a1, b0, b1))) ClampFirst(a, e, b, c, f, si, out s, out t);
-                else ClampFirst(e, a, b, -f, -c, ti, out t, out s); // the mirror image: t first
-                return Residual(d0, d1, w, s, t, sized, out inRange);
+                var rare = SegmentSegmentRare(a0, a1, b0, b1, nn, sNum, tNum);
+                s = rare.S; t = rare.T; inRange = rare.InRange;
+                return rare.R2;
             }
+            // The configuration's squared size in the fast range (it is not 0: a is not), and below, the squared
+            // distance in it too or exactly 0 (a subnormal one would have lost bits, and 2^k-scaled inputs would not agree).
+            bool sized = Range.In(size2);
+            // si ∈ [0, 1] exactly when 0 ≤ sNum ≤ nn (nn > 0; a rounded quotient of sNum > nn exceeds 1), so the
+            // branch, which mispredicts on mixed inputs, does not wait for the divisions.
+            if (sNum >= 0 && sNum <= nn && tNum >= 0 && tNum <= nn)
+            {
+                // The gap between the lines, (w·n)²/|n|², carries no error from (s, t); crossing 2D segments give
+                // exactly 0. Unscaled by multiplying by 1/k, a power of two (formed off the critical path): it rounds
+                // as dividing by k does, without two more dependent divisions.
+                s = sNum / nn; t = tNum / nn;
+                double ik = 1 / k, wn = Vector3D.Dot(wk, n), gap2 = wn * wn / nn * ik * ik;
+                inRange = sized && (wn == 0 || Range.In(gap2));
+                return gap2;
+            }
+            double si = sNum / nn, ti = tNum / nn;
+            double b = Vector3D.Dot(d0, d1), c = -Vector3D.Dot(d0, w), f = -Vector3D.Dot(d1, w);
+            double outS = Math.Max(-si, si - 1), outT = Math.Max(-ti, ti - 1);
+            if (outS > outT || (outS == outT && !Order.Swap(a0, a1, b0, b1))) ClampFirst(a, e, b, c, f, si, out s, out t);
+            else ClampFirst(e, a, b, -f, -c, ti, out t, out s); // the mirror image: t first
+            return Residual(d0, d1, w, s, t, sized, out inRange);
+        }
 
-            double best = NearlyParallel(a0, a1, b0, b1, d0, d1, w, nn > 0, si, ti, out s, out t);
-            inRange = sized && (best == 0 || Range.In(best));
-            return best;
+        /// <summary><see cref="SegmentSegmentInline"/> as a call, for the kernels that use it inside larger ones.</summary>
+        public static double SegmentSegmentCore(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, out double s, out double t, out bool inRange) =>
+            SegmentSegmentInline(a0, a1, b0, b1, out s, out t, out inRange);
+
+        /// <summary>A squared distance, the parameters of a closest pair and whether the distance is in the fast range.</summary>
+        private readonly struct Closest
+        {
+            public readonly double R2, S, T;
+            public readonly bool InRange;
+
+            public Closest(double r2, double s, double t, bool inRange) { R2 = r2; S = s; T = t; InRange = inRange; }
+        }
+
+        /// <summary>
+        /// The rare cases of <see cref="SegmentSegmentInline"/>: a point (a segment of length 0) against a segment, and
+        /// nearly parallel or parallel segments, given |n|² and the numerators of the lines' parameters (used where |n|² &gt; 0).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static Closest SegmentSegmentRare(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, double nn, double sNum, double tNum)
+        {
+            var d0 = a1 - a0;
+            var d1 = b1 - b0;
+            var w = b0 - a0;
+            double a = d0.LengthSquared, e = d1.LengthSquared, size2 = a + e + w.LengthSquared;
+            // The configuration's squared size in the fast range, or every point the same.
+            bool sized = Range.In(size2) || (size2 == 0 && a0 == a1 && b0 == b1 && a0 == b0);
+            double s, t;
+            bool inRange;
+            if (a == 0 || e == 0)
+            {
+                // A point against a segment (or a point).
+                if (a == 0 && e == 0) { s = 0; t = 0; }
+                else if (a == 0) { s = 0; t = Num.Clamp(-Vector3D.Dot(d1, w) / e, 0, 1); }
+                else { t = 0; s = Num.Clamp(Vector3D.Dot(d0, w) / a, 0, 1); }
+                double r2 = Residual(d0, d1, w, s, t, sized, out inRange);
+                return new Closest(r2, s, t, inRange);
+            }
+            bool hasInterior = nn > 0;
+            double best = NearlyParallel(a0, a1, b0, b1, d0, d1, w, hasInterior, hasInterior ? sNum / nn : 0, hasInterior ? tNum / nn : 0, out s, out t);
+            return new Closest(best, s, t, sized && (best == 0 || Range.In(best)));
         }
 
         /// <summary>
@@ -158,21 +198,23 @@ namespace ProximityLib.Double
             return r2;
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 SegmentSegment(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, out bool inRange)
         {
-            double r2 = SegmentSegmentCore(a0, a1, b0, b1, out double s, out double t, out inRange);
+            double r2 = SegmentSegmentInline(a0, a1, b0, b1, out double s, out double t, out inRange);
             s += 0; t += 0; // −0 + 0 = 0: the two argument orders may reach a zero parameter with either sign
             return new DistanceResult3(Math.Sqrt(r2), r2, SegmentPoint(a0, a1, s), SegmentPoint(b0, b1, t), s, t);
         }
 
         /// <summary>
         /// The distance of <see cref="SegmentSegment"/> alone, or NaN where its inRange is false (NaN cannot come out of
-        /// range otherwise). Not an out parameter: on this call, which is not inlined, an out bool made the distance-only
+        /// range otherwise). Not an out parameter: when this call was not inlined, an out bool made the distance-only
         /// query 2–3x slower than Between without dynamic PGO (measured), while a NaN test costs nothing.
         /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double SegmentSegmentDistance(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1)
         {
-            double r2 = SegmentSegmentCore(a0, a1, b0, b1, out _, out _, out bool inRange);
+            double r2 = SegmentSegmentInline(a0, a1, b0, b1, out _, out _, out bool inRange);
             return inRange ? Math.Sqrt(r2) : double.NaN;
         }
 
