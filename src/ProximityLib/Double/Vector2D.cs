@@ -16,16 +16,16 @@ namespace ProximityLib.Double
         public Vector2D(double x, double y) { X = x; Y = y; }
 
         /// <summary>The zero vector.</summary>
-        public static Vector2D Zero => default;
+        public static Vector2D Zero { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => default; }
         /// <summary>The unit vector along X.</summary>
-        public static Vector2D UnitX => new Vector2D(1, 0);
+        public static Vector2D UnitX { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => new Vector2D(1, 0); }
         /// <summary>The unit vector along Y.</summary>
-        public static Vector2D UnitY => new Vector2D(0, 1);
+        public static Vector2D UnitY { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => new Vector2D(0, 1); }
 
         /// <summary>The squared Euclidean length.</summary>
         public double LengthSquared => X * X + Y * Y;
         /// <summary>The Euclidean length.</summary>
-        public double Length => Math.Sqrt(LengthSquared);
+        public double Length { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => Math.Sqrt(LengthSquared); }
         /// <summary>True when every component is finite.</summary>
         public bool IsFinite => double.IsFinite(X) && double.IsFinite(Y);
 

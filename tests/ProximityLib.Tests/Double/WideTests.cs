@@ -21,6 +21,29 @@ namespace ProximityTests.Double
             Assert.That(ClosestDistance.Between(new Sphere(V(0, 0, 0), 1e-200), new Sphere(V(3e-200, 0, 0), 1e-200)).Distance, Is.EqualTo(1e-200).Within(1e-215));
         }
 
+        /// <summary>
+        /// Ball verdicts d² ≤ r² trust the fast comparison only when the larger square is in range
+        /// (<c>Range.LargerIn</c>). Each case here has one or both squares outside [2^-960, 2^960], and the expected verdict
+        /// follows from the inputs by hand: points 1e-170 apart are apart, however small their squared gap rounds. Every
+        /// configuration is at one scale, so the tolerance band (relative to that scale) cannot excuse a wrong verdict.
+        /// </summary>
+        [Test]
+        public void BallVerdictsWhereASquareLeavesTheRange()
+        {
+            // Both squares underflow to 0: the bare comparison would say "touching".
+            Assert.That(ProximityQuery.Overlaps(new Sphere(V(0, 0, 0), 0), new Sphere(V(1e-170, 0, 0), 0)), Is.False);
+            Assert.That(ProximityQuery.Overlaps(V(1e-170, 0, 0), new Sphere(V(0, 0, 0), 0)), Is.False);
+            Assert.That(ProximityQuery.Overlaps(new Segment3(V(1e-170, 0, 0), V(1e-170, 1e-170, 0)), new Sphere(V(0, 0, 0), 0)), Is.False);
+            Assert.That(ProximityQuery.Overlaps(new Sphere(V(0, 0, 0), 1e-170), new Sphere(V(1e-171, 0, 0), 1e-170)), Is.True);
+            // One square out of range, the other in it.
+            Assert.That(ProximityQuery.Overlaps(new Sphere(V(0, 0, 0), 1e160), new Sphere(V(1, 0, 0), 1e160)), Is.True);
+            Assert.That(ProximityQuery.Overlaps(new Sphere(V(0, 0, 0), 1e-200), new Sphere(V(1, 0, 0), 1e-200)), Is.False);
+            Assert.That(ProximityQuery.Overlaps(V(1e200, 0, 0), new Sphere(V(0, 0, 0), 1)), Is.False);
+            // Both squares overflow.
+            Assert.That(ProximityQuery.Overlaps(new Sphere(V(0, 0, 0), 1e160), new Sphere(V(3e160, 0, 0), 1e160)), Is.False);
+            Assert.That(ProximityQuery.Overlaps(new Sphere(V(0, 0, 0), 1e160), new Sphere(V(1.5e160, 0, 0), 1e160)), Is.True);
+        }
+
         [Test]
         public void FarPointsHaveAFiniteDistance()
         {

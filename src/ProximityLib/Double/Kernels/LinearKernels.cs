@@ -348,7 +348,7 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// Whether the line or ray meets the closed ball: the squared residual of <see cref="PointLinear"/> against r².
-        /// <paramref name="inRange"/>: either square in the fast range (as <see cref="WithinRadius"/>) and no overflowed
+        /// <paramref name="inRange"/>: the larger square in the fast range (as <see cref="WithinRadius"/>) and no overflowed
         /// difference.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

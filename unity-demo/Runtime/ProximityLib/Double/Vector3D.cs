@@ -20,13 +20,13 @@ namespace ProximityLib.Double
         public Vector3D(double x, double y, double z) { X = x; Y = y; Z = z; }
 
         /// <summary>The zero vector.</summary>
-        public static Vector3D Zero => default;
+        public static Vector3D Zero { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => default; }
         /// <summary>The unit vector along X.</summary>
-        public static Vector3D UnitX => new Vector3D(1, 0, 0);
+        public static Vector3D UnitX { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => new Vector3D(1, 0, 0); }
         /// <summary>The unit vector along Y.</summary>
-        public static Vector3D UnitY => new Vector3D(0, 1, 0);
+        public static Vector3D UnitY { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => new Vector3D(0, 1, 0); }
         /// <summary>The unit vector along Z.</summary>
-        public static Vector3D UnitZ => new Vector3D(0, 0, 1);
+        public static Vector3D UnitZ { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => new Vector3D(0, 0, 1); }
 
         /// <summary>The squared Euclidean length.</summary>
         public double LengthSquared
@@ -36,7 +36,7 @@ namespace ProximityLib.Double
         }
 
         /// <summary>The Euclidean length.</summary>
-        public double Length => Math.Sqrt(LengthSquared);
+        public double Length { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => Math.Sqrt(LengthSquared); }
 
         /// <summary>True when every component is finite.</summary>
         public bool IsFinite => double.IsFinite(X) && double.IsFinite(Y) && double.IsFinite(Z);

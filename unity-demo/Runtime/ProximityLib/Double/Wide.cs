@@ -40,6 +40,14 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool In(double x2) => (ulong)(BitConverter.DoubleToInt64Bits(x2) - Lo2Bits) <= Span2Bits;
 
+        /// <summary>
+        /// Whether the larger of two squares (≥ 0) lies in [2^-960, 2^960]: one check where testing each would cost two,
+        /// for verdicts x2 ≤ y2 that only need the larger one trusted. A NaN <paramref name="x2"/> fails (maxsd returns
+        /// its second operand when either is NaN, and so does Math.Max).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool LargerIn(double y2, double x2) => In(Num.Max(y2, x2));
+
         private const long Lo2Bits = (1023L - 960) << 52;
         private const ulong Span2Bits = 1920UL << 52;
 
