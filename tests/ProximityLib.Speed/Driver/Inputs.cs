@@ -136,8 +136,20 @@ namespace ProximitySpeed
             {
                 var a = Shape(r, ka, dim, Center(r, 3));
                 var b = Shape(r, kb, dim, Center(r, 3));
-                if (!ProximityQuery.Overlaps((dynamic)a, (dynamic)b)) return (a, b);
+                if (!Overlaps(a, b)) return (a, b);
             }
+        }
+
+        /// <summary>
+        /// The double API's Overlaps for two boxed shapes, the overload found by reflection: the runtime binder behind
+        /// <c>dynamic</c> does not bind overloads whose shapes are <c>in</c> parameters, and reflection sees either form.
+        /// </summary>
+        private static bool Overlaps(object a, object b)
+        {
+            static Type Shape(System.Reflection.ParameterInfo p) => p.ParameterType.IsByRef ? p.ParameterType.GetElementType()! : p.ParameterType;
+            var method = typeof(ProximityQuery).GetMethods().Single(m => m.Name == nameof(ProximityQuery.Overlaps)
+                && m.GetParameters() is { Length: 2 } ps && Shape(ps[0]) == a.GetType() && Shape(ps[1]) == b.GetType());
+            return (bool)method.Invoke(null, new[] { a, b })!;
         }
 
         /// <summary>B is built around a point of A, so the pair always touches or overlaps.</summary>

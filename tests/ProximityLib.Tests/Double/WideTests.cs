@@ -42,6 +42,10 @@ namespace ProximityTests.Double
             // Both squares overflow.
             Assert.That(ProximityQuery.Overlaps(new Sphere(V(0, 0, 0), 1e160), new Sphere(V(3e160, 0, 0), 1e160)), Is.False);
             Assert.That(ProximityQuery.Overlaps(new Sphere(V(0, 0, 0), 1e160), new Sphere(V(1.5e160, 0, 0), 1e160)), Is.True);
+            // A line whose origin lies 2e308 from the ball, 5e307 from its centre: the difference overflows and the
+            // residual's square is NaN.
+            Assert.That(ProximityQuery.Overlaps(new Line3(V(-1e308, 0, 0), V(1, 0, 0)), new Sphere(V(1e308, 5e307, 0), 6e307)), Is.True);
+            Assert.That(ProximityQuery.Overlaps(new Line3(V(-1e308, 0, 0), V(1, 0, 0)), new Sphere(V(1e308, 5e307, 0), 4e307)), Is.False);
         }
 
         [Test]

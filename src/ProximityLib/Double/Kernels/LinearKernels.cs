@@ -348,8 +348,8 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// Whether the line or ray meets the closed ball: the squared residual of <see cref="PointLinear"/> against r².
-        /// <paramref name="inRange"/>: the larger square in the fast range (as <see cref="WithinRadius"/>) and no overflowed
-        /// difference.
+        /// <paramref name="inRange"/>: the larger square in the fast range (as <see cref="WithinRadius"/>); an overflowed
+        /// difference makes r² NaN, which that check fails.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool LinearInBall(Vector3D center, Vector3D o, Vector3D d, bool ray, double radius, out bool inRange)
@@ -358,9 +358,7 @@ namespace ProximityLib.Double
             double t = Vector3D.Dot(w, d);
             if (ray && t <= 0) t = 0;
             double r2 = (t == 0 ? w : w - d * t).LengthSquared;
-            bool inside = WithinRadius(r2, radius, out inRange);
-            inRange &= !double.IsNaN(r2);
-            return inside;
+            return WithinRadius(r2, radius, out inRange);
         }
 
         /// <summary>Whether the capsule axis [b0, b1] comes within r (the sum of the radii) of c; <paramref name="inRange"/> as for <see cref="SegmentInSphere"/>, and the sum finite.</summary>

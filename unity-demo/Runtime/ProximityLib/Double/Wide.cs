@@ -42,8 +42,8 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// Whether the larger of two squares (≥ 0) lies in [2^-960, 2^960]: one check where testing each would cost two,
-        /// for verdicts x2 ≤ y2 that only need the larger one trusted. A NaN <paramref name="x2"/> fails (maxsd returns
-        /// its second operand when either is NaN, and so does Math.Max).
+        /// for verdicts x2 ≤ y2 that only need the larger one trusted. A NaN <paramref name="x2"/> fails: Num.Max returns it
+        /// (maxsd returns its second operand when either is NaN; Math.Max returns NaN).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool LargerIn(double y2, double x2) => In(Num.Max(y2, x2));
