@@ -11,6 +11,101 @@ namespace ProximityTests.Pairs
         private static readonly Triangle3 T = new Triangle3(V(0, 0, 0), V(4, 0, 0), V(0, 4, 0));
         private static readonly Triangle2 T2 = new Triangle2(V(0, 0), V(4, 0), V(0, 4));
 
+        /// <summary>
+        /// A stadium whose axis passes a 2D triangle at a gap of rounding size (a few 1e-17 against a unit triangle), along
+        /// an edge or past a vertex: moved by PointB − PointA it must just touch. The witnesses' difference is then mostly
+        /// the rounding of their coordinates, so a push along it turned by up to a right angle. Seeded; a failure names
+        /// the case.
+        /// </summary>
+        [Test]
+        public void StadiumAtARoundingGapIsPushedOutToTouching([Values(0, 1)] int along)
+        {
+            var g = new Random(20261124 + along);
+            for (int i = 0; i < 400; i++)
+            {
+                var t = new Triangle2(P2(g), P2(g), P2(g));
+                Vector2D a = t.A, b = t.B, c = t.C;
+                if ((b.X - a.X) * (c.Y - a.Y) - (b.Y - a.Y) * (c.X - a.X) == 0) continue;
+                double tiny = (g.NextDouble() - 0.25) * 4e-16, radius = 0.01 + 0.1 * g.NextDouble();
+                Vector2D p0, p1;
+                if (along == 0)
+                {
+                    // Parallel to edge A→B, beside it, off it by `tiny` along its normal (away from C).
+                    var e = b - a;
+                    var n = new Vector2D(e.Y, -e.X) * (1 / e.Length);
+                    if (Vector2D.Dot(n, c - a) > 0) n = n * -1;
+                    p0 = a + e * 0.25 + n * tiny;
+                    p1 = a + e * (0.25 + 0.5 * g.NextDouble()) + n * tiny;
+                }
+                else
+                {
+                    // Across the outward bisector at C, passing C by `tiny`.
+                    var bis = (c - a) * (1 / (c - a).Length) + (c - b) * (1 / (c - b).Length);
+                    bis = bis * (1 / bis.Length);
+                    var u = new Vector2D(bis.Y, -bis.X);
+                    p0 = c + u * (0.1 + 0.5 * g.NextDouble()) + bis * tiny;
+                    p1 = c - u * (0.1 + 0.5 * g.NextDouble()) + bis * tiny;
+                }
+                var cap = new Capsule2(p0, p1, radius);
+                var r = ClosestDistance.Between(cap, t);
+                var push = new Vector2D(r.PointB.X - r.PointA.X, r.PointB.Y - r.PointA.Y);
+                var moved = new Capsule2(p0 + push, p1 + push, radius);
+                double scale = Scale(cap, t) + 2;
+                double off = ExactSigned(moved, t).ToDouble();
+                Assert.That(Math.Abs(off), Is.LessThanOrEqualTo(64 * U * scale), $"case {i}: {cap} | {t} → {r}");
+            }
+        }
+
+        /// <summary>
+        /// The 3D counterpart: a capsule whose axis passes a triangle at a gap of rounding size, beside an edge (in the
+        /// plane), past a vertex (in the plane) or above the face; moved by PointB − PointA it must just touch.
+        /// </summary>
+        [Test]
+        public void CapsuleAtARoundingGapIsPushedOutToTouching([Values(0, 1, 2)] int along)
+        {
+            var g = new Random(20261125 + along);
+            for (int i = 0; i < 300; i++)
+            {
+                var t = new Triangle3(P3(g), P3(g), P3(g));
+                Vector3D a = t.A, b = t.B, c = t.C;
+                var normal = Vector3D.Cross(b - a, c - a);
+                if (normal.Length < 1e-3) continue;
+                normal = normal * (1 / normal.Length);
+                double tiny = (g.NextDouble() - 0.25) * 4e-16, radius = 0.01 + 0.1 * g.NextDouble();
+                Vector3D p0, p1;
+                if (along == 0)
+                {
+                    var e = b - a;
+                    var n = Vector3D.Cross(e, normal) * (1 / e.Length);
+                    if (Vector3D.Dot(n, c - a) > 0) n = n * -1;
+                    p0 = a + e * 0.25 + n * tiny;
+                    p1 = a + e * (0.25 + 0.5 * g.NextDouble()) + n * tiny;
+                }
+                else if (along == 1)
+                {
+                    var bis = (c - a) * (1 / (c - a).Length) + (c - b) * (1 / (c - b).Length);
+                    bis = bis * (1 / bis.Length);
+                    var u = Vector3D.Cross(bis, normal);
+                    p0 = c + u * (0.1 + 0.5 * g.NextDouble()) + bis * tiny;
+                    p1 = c - u * (0.1 + 0.5 * g.NextDouble()) + bis * tiny;
+                }
+                else
+                {
+                    var inside = (a + b + c) * (1.0 / 3);
+                    var e = b - a;
+                    p0 = inside + e * 0.05 + normal * tiny;
+                    p1 = inside - e * 0.05 + normal * tiny;
+                }
+                var cap = new Capsule3(p0, p1, radius);
+                var r = ClosestDistance.Between(cap, t);
+                var push = r.PointB - r.PointA;
+                var moved = new Capsule3(p0 + push, p1 + push, radius);
+                double scale = Scale(cap, t) + 2;
+                double off = ExactSigned(moved, t).ToDouble();
+                Assert.That(Math.Abs(off), Is.LessThanOrEqualTo(64 * U * scale), $"case {i}: {cap} | {t} → {r}");
+            }
+        }
+
         [Test]
         public void ApartAndShallow()
         {

@@ -573,9 +573,38 @@ namespace ProximityLib.Double
             if (apart)
             {
                 double d = Math.Sqrt(g);
-                dir = Unit(onSeg - onTri, AnyPerpendicular(Range.MaxAbs(p1 - p0) > 0 ? p1 - p0 : Longest(f)));
+                var diff = onSeg - onTri;
+                dir = default;
+                // Below 2^-30 of the configuration's size (K is its inverse) the witnesses' difference carries the rounding
+                // of their coordinates, enough to turn a capsule pushed out along it into overlap. When the closest
+                // features are an edge and a point or the segment and a vertex, the separating axis is that direction
+                // exactly: taken when the difference agrees with it up to rounding (its part across the axis below
+                // 2^-46 of the size). Otherwise (a vertex and an endpoint) the difference is the direction.
+                if (area != 0 && g * f.K * f.K < 8.673617379884035e-19)
+                {
+                    SeparatingAxis(p0, p1, f, out var axis);
+                    if (Math.Abs(diff.X * axis.Y - diff.Y * axis.X) * f.K <= 1.4210854715202004e-14) dir = axis;
+                }
+                if (dir == default) dir = Unit(diff, AnyPerpendicular(Range.MaxAbs(p1 - p0) > 0 ? p1 - p0 : Longest(f)));
                 return d;
             }
+            double best = SeparatingAxis(p0, p1, f, out dir);
+            double depth = best < double.PositiveInfinity ? Math.Max(0, best) / f.K : 0;
+            if (dir == default) dir = AnyPerpendicular(Range.MaxAbs(p1 - p0) > 0 ? p1 - p0 : Longest(f));
+            var push = dir * depth;
+            EdgesDistance(p0 + push, p1 + push, f, out s, out onSeg, out onTri);
+            onSeg -= push;
+            return depth > 0 ? -depth : 0;
+        }
+
+        /// <summary>
+        /// The separating-axis search of a segment against a 2D triangle over the edges' normals and the segment's: the
+        /// unit direction of the shortest push of the segment clear of the triangle (<see cref="PushAxis"/>; negative
+        /// when apart: then the axis of largest separation) and that push in the triangle's scaled frame. No axis (both
+        /// degenerate) leaves <paramref name="dir"/> zero.
+        /// </summary>
+        private static double SeparatingAxis(Vector3D p0, Vector3D p1, in TriFrame f, out Vector3D dir)
+        {
             var q0 = (p0 - f.A) * f.K;
             var q1 = (p1 - f.A) * f.K;
             double best = double.PositiveInfinity;
@@ -584,12 +613,7 @@ namespace ProximityLib.Double
             SegmentAxis(Perp(f.E2), q0, q1, f, ref best, ref dir);
             SegmentAxis(Perp(f.E3), q0, q1, f, ref best, ref dir);
             SegmentAxis(Perp(q1 - q0), q0, q1, f, ref best, ref dir);
-            double depth = best < double.PositiveInfinity ? Math.Max(0, best) / f.K : 0;
-            if (dir == default) dir = AnyPerpendicular(Range.MaxAbs(p1 - p0) > 0 ? p1 - p0 : Longest(f));
-            var push = dir * depth;
-            EdgesDistance(p0 + push, p1 + push, f, out s, out onSeg, out onTri);
-            onSeg -= push;
-            return depth > 0 ? -depth : 0;
+            return best;
         }
 
         /// <summary>
