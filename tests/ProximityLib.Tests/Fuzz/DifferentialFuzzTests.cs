@@ -106,6 +106,8 @@ namespace ProximityTests.Fuzz
         [TestCase(41, 1000000121829, TestName = "Stadium axis touching a doubled-vertex triangle")]
         [TestCase(41, 1000000017149, TestName = "Capsule axis along a triangle's edge, 2e-15 off it: push-out along the facet normal")]
         [TestCase(43, 1000000109309, TestName = "Capsule axis along a flat triangle, 1e-16 off it: push-out along the common normal")]
+        [TestCase(97, 1000000063269, TestName = "Stadium axis end 7e-17 outside a triangle's edge, parallel to it: push-out along the edge normal")]
+        [TestCase(98, 1000000011741, TestName = "Ray grazing a triangle's vertex, scaled 2^-461: scaling stays exact (slow path below 2^-400)")]
         public void CasesTheNewPairFuzzFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = Checker.Run(FuzzCase.Create(seed, index), exact: true);
