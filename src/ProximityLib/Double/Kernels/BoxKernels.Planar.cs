@@ -89,6 +89,7 @@ namespace ProximityLib.Double
         }
 
         /// <summary>The planar case of <see cref="Penetration"/>: A's and B's face normals, in that order.</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static double Penetration2(in Box2 a, in Box2 b, Vector2D t, out Vector2D push)
         {
             Vector2D ax = a.X, ay = a.Y, bx = b.X, by = b.Y, ha = a.Half, hb = b.Half;
@@ -134,6 +135,7 @@ namespace ProximityLib.Double
         /// B's four corners to box A (the first of equal ones, A's before B's), and the pair realising it in world
         /// coordinates (relative to the common origin the caller subtracted).
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static double BoxesApart2(in Box2 a, Vector2D originA, in Box2 b, Vector2D originB, out Vector2D onA, out Vector2D onB)
         {
             var ax = b.ToLocal(a.X);
@@ -189,6 +191,7 @@ namespace ProximityLib.Double
         }
 
         /// <summary>The scalar form of <see cref="Corners2"/>: the only one on netstandard2.1 (Unity) and without AVX2.</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         internal static double Corners2Scalar(Vector2D pa, Vector2D dx, Vector2D dy, Vector2D loB, Vector2D hiB,
             Vector2D pb, Vector2D ex, Vector2D ey, Vector2D loA, Vector2D hiA, out int win)
         {

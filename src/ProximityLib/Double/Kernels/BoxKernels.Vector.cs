@@ -101,6 +101,7 @@ namespace ProximityLib.Double
         /// first axis holding the least (in the scalar form's order) is then tried alone by <see cref="TryAxis"/>, so both
         /// forms return the same bits.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         internal static double PenetrationVector(in Box a, in Box b, Vector3D t, out Vector3D push)
         {
             Vector3D ax = a.X, ay = a.Y, az = a.Z, bx = b.X, by = b.Y, bz = b.Z, ha = a.Half, hb = b.Half;
@@ -177,6 +178,7 @@ namespace ProximityLib.Double
         /// with zeros added where it adds nothing (which can only change the sign of a zero coordinate, and the squared
         /// gap not at all), so both forms return the same bits and the same corner.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         internal static double VerticesVector(Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
             Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA, bool planar, out int win, out uint edges)
         {
@@ -214,6 +216,7 @@ namespace ProximityLib.Double
         /// <see cref="Corners2Scalar"/> on AVX2 lanes, A's four corners in one vector and B's in another: each lane makes
         /// the scalar form's operations (a zero added where it adds nothing), so the same bits and the same corner.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         internal static double Corners2Vector(Vector2D pa, Vector2D dx, Vector2D dy, Vector2D loB, Vector2D hiB,
             Vector2D pb, Vector2D ex, Vector2D ey, Vector2D loA, Vector2D hiA, out int win)
         {
@@ -233,6 +236,7 @@ namespace ProximityLib.Double
         /// The first of the axes (ax, ay, bx, by) holding the least of <see cref="TryAxis2"/>'s push-outs, or −1 when none
         /// is an axis: per lane (ra + rb − |sep|)/len, exactly the smaller of its down and up.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         internal static int LeastAxis2(Vector2D ax, Vector2D ay, Vector2D bx, Vector2D by, Vector2D ha, Vector2D hb, Vector2D t)
         {
             Vector256<double> x = Vector256.Create(ax.X, ay.X, bx.X, by.X), y = Vector256.Create(ax.Y, ay.Y, bx.Y, by.Y);

@@ -200,6 +200,7 @@ namespace ProximityLib.Double
         /// <paramref name="planar"/> solids whose axes cross: the Minkowski difference of the axes has an interior, and its
         /// depth (<see cref="Separation2"/>) adds to the radii.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         public static DistanceResult3 LinearCapsule(in Linear a, double ra, Vector3D b0, Vector3D b1, double rb, bool planar, bool solid, out bool inRange)
         {
             double r2 = LinearSegment(a, b0, b1, out double s, out double t, out var v, out inRange);
@@ -247,6 +248,7 @@ namespace ProximityLib.Double
         /// bounds the extent along the axis (A's, unless the axis is A's own normal) is paired with its image across the
         /// depth on the other axis.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static DistanceResult3 Crossing2(in Linear a, double ra, in Linear b, double rb, double g, Vector3D axis, bool aFlat)
         {
             double s, t;
@@ -286,6 +288,7 @@ namespace ProximityLib.Double
         /// is one value (its own normal, or B's direction when that is perpendicular to A). Extents are measured from A's start, so a common translation costs
         /// nothing. Ties go to the earlier axis.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         public static double Separation2(in Linear a, in Linear b, out Vector3D axis, out bool aFlat)
         {
             double g = double.PositiveInfinity;
@@ -317,6 +320,7 @@ namespace ProximityLib.Double
         /// can be A's normal itself (a line perpendicular to B), and rounding then decides which of the two equal gaps
         /// wins; A is flat along either.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static void Gap(Vector3D e, double len, in Linear a, in Linear b, Vector3D w, ref double g, ref Vector3D axis, ref bool first, ref bool aFlat)
         {
             double kA = Vector3D.Dot(a.Dir, e);

@@ -17,6 +17,7 @@ namespace ProximityLib.Double
         /// A moved by the minimum translation just touches B, and a pair of the touching configuration found the same
         /// way, moved back, realises the penetration.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         public static DistanceResult3 BoxBox(in Box a, in Box b, out bool inRange)
         {
             double size = Size(a, b);
@@ -56,6 +57,7 @@ namespace ProximityLib.Double
         /// The distance of <see cref="BoxBox"/> alone: the same steps, without the witness search of overlapping boxes
         /// unless the depth search found a separation (then its gap is the answer, as there, from the same search).
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         public static double BoxBoxDistance(in Box a, in Box b, out bool inRange)
         {
             inRange = Range.Box(Size(a, b));
@@ -88,6 +90,7 @@ namespace ProximityLib.Double
         }
 
         /// <summary>The scalar form of <see cref="Penetration"/>: the only one on netstandard2.1 (Unity) and without AVX2.</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         internal static double PenetrationScalar(in Box a, in Box b, Vector3D t, out Vector3D push)
         {
             Vector3D ax = a.X, ay = a.Y, az = a.Z, bx = b.X, by = b.Y, bz = b.Z, ha = a.Half, hb = b.Half;
@@ -156,6 +159,7 @@ namespace ProximityLib.Double
         /// exceed the best pair (with a margin, so rounding never hides a win). The search also stops once the best
         /// squared gap is at most <paramref name="enough"/>.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static double BoxesApart(in Box a, Vector3D originA, in Box b, Vector3D originB, double enough, out Vector3D onA, out Vector3D onB)
         {
             bool planar = a.Planar || b.Planar;
@@ -276,6 +280,7 @@ namespace ProximityLib.Double
         }
 
         /// <summary>The scalar form of <see cref="Vertices"/>: the only one on netstandard2.1 (Unity) and without AVX2.</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         internal static double VerticesScalar(Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
             Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA, bool planar, out int win, out uint edges)
         {
@@ -410,6 +415,7 @@ namespace ProximityLib.Double
         }
 
         /// <summary>The scalar form of <see cref="BoxBoxOverlaps(in Box, in Box)"/>: the only one on netstandard2.1 (Unity) and for planar boxes.</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         internal static bool BoxBoxOverlapsScalar(in Box a, in Box b)
         {
             var tw = (b.Origin - a.Origin) + b.ToWorldOffset(b.LocalCenter) - a.ToWorldOffset(a.LocalCenter);

@@ -16,6 +16,7 @@ namespace ProximityLib.Double
         /// Meeting: the least push over the directions that can clear it (<see cref="LineBoxPenetration"/>), and the pair of
         /// the just-touching configuration, the line's point moved back.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         public static DistanceResult3 LineBox(Vector3D o, Vector3D u, bool ray, in Box box, out bool inRange)
         {
             var ro = o - box.Origin;
@@ -46,6 +47,7 @@ namespace ProximityLib.Double
         /// box's projection onto it, [tc − reach, tc + reach] with tc the parameter nearest the centre; the stretch is
         /// doubled (and widened by 2^-40·|tc| for the rounding of tc) so the clipped segment holds the minimum strictly.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static double LineBoxNearest(Vector3D m, Vector3D d, Vector3D h, bool ray, out double t, out Vector3D e)
         {
             double tc = -Vector3D.Dot(m, d);
@@ -69,6 +71,7 @@ namespace ProximityLib.Double
         /// A ray can also be pushed back past a face it leaves through: along a box normal n with n·d ≥ 0, by the
         /// distance from its origin to that face.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static double LineBoxPenetration(Vector3D m, Vector3D d, Vector3D h, bool planar, bool ray, out Vector3D dir)
         {
             double best = double.PositiveInfinity;
@@ -130,6 +133,7 @@ namespace ProximityLib.Double
         /// contact direction: toward the box when apart (the box-local gap vector, normalised), against the push when the
         /// axis meets the box, also where the push is zero (the axis touching: the direction of the separating axis).
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         public static DistanceResult3 CapsuleBox(Vector3D a, Vector3D b, double r, in Box box, out bool inRange)
         {
             var ra = a - box.Origin;

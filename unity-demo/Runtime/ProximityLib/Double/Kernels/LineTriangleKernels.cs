@@ -80,6 +80,7 @@ namespace ProximityLib.Double
         /// that point as both witnesses. <paramref name="inRange"/>: the configuration's squared size (relative to a) and
         /// the squared distance are in the fast range (or exactly 0).
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         public static DistanceResult3 LinearTriangle(Vector3D o, Vector3D u, bool ray, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
         {
             TriangleStretch(o, u, a, b, c, out double lo, out double hi, out double m, out var oa, out var eb, out var ec);
@@ -115,6 +116,7 @@ namespace ProximityLib.Double
         /// line's point moved back. Whether the triangle is flat is decided by the exact orientation of the vertices as
         /// given; a flat one is the segment or point it is (never negative). Touching: one point as both witnesses.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         public static DistanceResult3 LinearTriangle2(Vector3D o, Vector3D u, bool ray, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
         {
             var f = SolidStretch(o, u, ray, a, b, c, out double lo, out double hi, out var p0, out var p1, out bool sized);

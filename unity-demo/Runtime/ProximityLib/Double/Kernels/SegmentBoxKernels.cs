@@ -108,6 +108,7 @@ namespace ProximityLib.Double
         /// near-degenerate axis can only overestimate; the witness points are the closest points of the just-touching
         /// configuration, moved back.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         public static DistanceResult3 SegmentBox(Vector3D a, Vector3D b, in Box box, out bool inRange)
         {
             var ra = a - box.Origin;
@@ -144,6 +145,7 @@ namespace ProximityLib.Double
         /// no normalising; on a segment × edge direction the whole segment projects to one value, and the projections
         /// are divided by the direction's length once.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static double SegmentBoxPenetration(Vector3D m, Vector3D d, Vector3D h, bool planar, out Vector3D dir)
         {
             double best = double.PositiveInfinity;

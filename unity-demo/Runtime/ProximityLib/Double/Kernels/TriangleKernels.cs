@@ -101,6 +101,7 @@ namespace ProximityLib.Double
         /// <paramref name="fine"/>: the squared gap is in the fast range or exactly 0. The normal is the unit direction from
         /// the triangle's point toward p; the plane normal (+N) for a point on a non-flat triangle.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         public static PointContact PointTriangle(Vector3D p, in TriFrame f, out bool fine)
         {
             if (!f.Flat && f.Inside(p))
@@ -161,6 +162,7 @@ namespace ProximityLib.Double
         /// triangle not flat): minus the distance to the nearest edge, the normal that edge's outward normal. Outside, or
         /// flat (no interior: the segment or point it is): the nearest edge.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         public static PointContact PointTriangle2(Vector3D p, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
         {
             double size2 = TriFrame.Size2(a, b, c, p, p);
@@ -251,6 +253,7 @@ namespace ProximityLib.Double
         }
 
         /// <summary>Whether the 2D point x lies on the inner side of (or on) every edge of the triangle of orientation <paramref name="area"/>.</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static bool Inside2(Vector3D x, in TriFrame f, double area)
         {
             var w0 = (x - f.A) * f.K;
@@ -430,6 +433,7 @@ namespace ProximityLib.Double
         /// (0 when the axis lies in the plane or the triangle is flat), the witnesses from the axis moved by it, just touching;
         /// with no depth direction, the plane normal (a flat triangle: a direction perpendicular to the axis and the triangle).
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         public static DistanceResult3 CapsuleTriangle(Vector3D p0, Vector3D p1, double radius, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
         {
             // In the frame of a, so a translation adds no error (see TriangleTriangle); the witnesses move back at the end.
@@ -462,6 +466,7 @@ namespace ProximityLib.Double
         /// normal cone is wide and only the residual's parts along a feature the exact residual is perpendicular to (the
         /// segment, at an interior point; a triangle edge, at an interior point of it) turn it out of the cone: removed.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static Vector3D NearTouchDirection(Vector3D p0, Vector3D p1, in TriFrame f, double dist, double s, Vector3D onSeg, Vector3D onTri)
         {
             double best = f.Flat ? FlatPush(p0, p1, f, out var facet) : PrismPush(p0, p1, f, out facet);
@@ -490,6 +495,7 @@ namespace ProximityLib.Double
         /// difference of two segments, a parallelogram: the common normal d × e from exact differences, and its two
         /// in-plane edge normals.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static double FlatPush(Vector3D p0, Vector3D p1, in TriFrame f, out Vector3D dir)
         {
             dir = default;
@@ -552,6 +558,7 @@ namespace ProximityLib.Double
             SegmentTriangle2(p0, p1, f, Area2(f), flatDepth, out s, out onSeg, out onTri, out dir);
 
         /// <summary>As above, with the triangle's orientation <paramref name="area"/> given (only whether it is 0 matters).</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static double SegmentTriangle2(Vector3D p0, Vector3D p1, in TriFrame f, double area, bool flatDepth, out double s, out Vector3D onSeg, out Vector3D onTri, out Vector3D dir)
         {
             double g = 0;
@@ -603,6 +610,7 @@ namespace ProximityLib.Double
         /// when apart: then the axis of largest separation) and that push in the triangle's scaled frame. No axis (both
         /// degenerate) leaves <paramref name="dir"/> zero.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static double SeparatingAxis(Vector3D p0, Vector3D p1, in TriFrame f, out Vector3D dir)
         {
             var q0 = (p0 - f.A) * f.K;
@@ -621,6 +629,7 @@ namespace ProximityLib.Double
         /// triangle's hull (its extreme vertices along the coordinate of larger spread) each have their ends strictly on
         /// either side of the other's line, by exact orientation signs.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static bool CrossesFlat2(Vector3D p0, Vector3D p1, in TriFrame f)
         {
             bool alongX = Math.Max(Math.Abs(f.E1.X), Math.Abs(f.E2.X)) >= Math.Max(Math.Abs(f.E1.Y), Math.Abs(f.E2.Y));
@@ -672,6 +681,7 @@ namespace ProximityLib.Double
         }
 
         /// <summary>Segment against a solid 2D triangle (z = 0) as a result: negative when they overlap; a flat triangle is the segment it is (never negative).</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         public static DistanceResult3 SegmentTriangle2(Vector3D p0, Vector3D p1, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
         {
             double size2 = TriFrame.Size2(a, b, c, p0, p1);

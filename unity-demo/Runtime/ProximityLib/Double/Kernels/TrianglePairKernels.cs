@@ -16,6 +16,7 @@ namespace ProximityLib.Double
         /// common point; no plane-crossing interval is intersected, which is where the classic tests fail on coplanar input.
         /// Both frames share one scale, from the whole configuration.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         public static DistanceResult3 TriangleTriangle(Vector3D a0, Vector3D a1, Vector3D a2, Vector3D b0, Vector3D b1, Vector3D b2, out bool inRange)
         {
             // In the frame of a0: a crossing or an edge point is then rounded at the configuration's scale, not at its
@@ -52,6 +53,7 @@ namespace ProximityLib.Double
         /// the segment (its longest edge) or point it is: against a solid one, <see cref="SegmentTriangle2(Vector3D, Vector3D, in TriFrame, bool, out double, out Vector3D, out Vector3D, out Vector3D)"/>;
         /// two flat ones, the nine edge–edge distances (never negative).
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         public static DistanceResult3 TriangleTriangle2(Vector3D a0, Vector3D a1, Vector3D a2, Vector3D b0, Vector3D b1, Vector3D b2, out bool inRange)
         {
             double size2 = TriFrame.Size2(a0, a1, a2, b0, b1) + (b2 - a0).LengthSquared;
@@ -90,6 +92,7 @@ namespace ProximityLib.Double
         }
 
         /// <summary>Whether two solid 2D triangles overlap (see <see cref="TriangleTriangle2"/>).</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         public static bool TriangleTriangleOverlaps2(Vector3D a0, Vector3D a1, Vector3D a2, Vector3D b0, Vector3D b1, Vector3D b2, out bool inRange)
         {
             double size2 = TriFrame.Size2(a0, a1, a2, b0, b1) + (b2 - a0).LengthSquared;
@@ -116,6 +119,7 @@ namespace ProximityLib.Double
         /// The separating-axis test of two solid 2D triangles over their six edge normals, projected relative to A's first
         /// vertex in the shared scaled frame; with <paramref name="measure"/>, also the least push of A (world length) and its direction.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static bool TriangleTriangleSat2(in TriFrame fa, in TriFrame fb, bool measure, out double depth, out Vector3D dir)
         {
             var b0 = (fb.A - fa.A) * fa.K;
@@ -148,6 +152,7 @@ namespace ProximityLib.Double
         }
 
         /// <summary>The least squared distance over the nine pairs of an edge of A (moved by <paramref name="shift"/>) and an edge of B (A's edges outer, the first of equal ones).</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static double EdgePairs(in TriFrame fa, in TriFrame fb, Vector3D shift, out Vector3D pa, out Vector3D pb)
         {
             double best = double.PositiveInfinity;
@@ -188,6 +193,7 @@ namespace ProximityLib.Double
         /// the same axes (the facet normals of the Minkowski difference; any direction overestimates), and the witnesses
         /// of the triangle moved by it, just touching, moved back.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         public static DistanceResult3 TriangleBox(Vector3D a, Vector3D b, Vector3D c, in Box box, out bool inRange)
         {
             var o = box.Origin;
@@ -283,6 +289,7 @@ namespace ProximityLib.Double
         /// they touch), and a closest pair (box-local): the triangle's edges against the box, then in 3D the box's edges
         /// against the triangle.
         /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private static double TriangleBoxApart(Vector3D la, Vector3D lb, Vector3D lc, Vector3D lo, Vector3D hi, bool planar, out Vector3D pa, out Vector3D pb)
         {
             double best = double.PositiveInfinity;
