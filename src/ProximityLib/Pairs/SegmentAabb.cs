@@ -6,10 +6,10 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a segment and an AABB (3D): negative when the segment enters the box (minimum translation over the separating-axis candidates). Algorithm: convex piecewise-quadratic minimisation along the segment in the box frame; SAT for overlap (Ericson RTCD §5.3.3).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult3 Core(Segment3 a, Aabb3 b, out bool inRange) => Kernels.SegmentBox(a.Start, a.End, b.ToBox(), out inRange);
+        internal static DistanceResult3 Core(Segment3 a, Aabb3 b, out bool inRange) => Kernels.SegmentAabb(a.Start, a.End, b.Min, b.Max, false, out inRange);
         /// <summary>Closest distance between a segment and an AABB (2D): negative when the segment enters the box (minimum translation over the separating-axis candidates). Algorithm: convex piecewise-quadratic minimisation along the segment in the box frame; SAT for overlap (Ericson RTCD §5.3.3).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult2 Core(Segment2 a, Aabb2 b, out bool inRange) => Kernels.SegmentBox(a.Start.To3(), a.End.To3(), b.ToBox(), out inRange).To2();
+        internal static DistanceResult2 Core(Segment2 a, Aabb2 b, out bool inRange) => Kernels.SegmentAabb(a.Start.To3(), a.End.To3(), b.Min.To3(), b.Max.To3(), true, out inRange).To2();
     }
 
     public static partial class ProximityQuery

@@ -31,13 +31,13 @@ namespace ProximityLib.Double
     }
 
     /// <summary>
-    /// The algorithms, in double, shared by the double and float APIs. Inlining is chosen per kernel, by measurement:
-    /// the small ones are AggressiveInlining; the large ones that compute a whole answer (segment–box, line–capsule,
-    /// the triangle and box-distance kernels) are NoInlining. Without PGO (and on Mono) the JIT never inlines those,
-    /// but dynamic PGO inlines callees of up to about 1,000 IL bytes at a hot call site, and merged into the caller's
-    /// loop they ran up to 3× slower than called (ab against the previous commit, .NET 10: segment–AABB 110 → 45 ns,
-    /// line–capsule 262 → 99 ns). Large kernels left inlinable (the ray casts, the overlap tests, half-space pairs)
-    /// measured slower when kept out of line.
+    /// The algorithms, in double, shared by the double and float APIs. Inlining is chosen by measurement. Many small
+    /// kernels are AggressiveInlining. Of the others, those above the JIT's default inline size (128 IL bytes) are
+    /// mostly NoInlining: without PGO (and on Mono) the JIT does not inline them anyway, but dynamic PGO inlines callees
+    /// of up to about 1,000 IL bytes at a hot call site, and merged into the caller's loop they ran up to 3× slower than
+    /// called (ab against the previous commit, .NET 10: 2D segment–AABB 116 → 49 ns, line–capsule 266 → 100 ns). Those
+    /// left without it measured slower with it: the ray casts, half-space pairs, several overlap tests and the 3D
+    /// segment–triangle helpers.
     /// </summary>
     internal static partial class Kernels
     {

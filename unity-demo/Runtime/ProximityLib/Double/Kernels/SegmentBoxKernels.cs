@@ -49,9 +49,15 @@ namespace ProximityLib.Double
         private static double SlabSlope(Vector3D a, Vector3D d, Vector3D lo, Vector3D hi, double t) =>
             d.X * Outside(a.X + t * d.X, lo.X, hi.X) + d.Y * Outside(a.Y + t * d.Y, lo.Y, hi.Y) + d.Z * Outside(a.Z + t * d.Z, lo.Z, hi.Z);
 
-        /// <summary>e − clamp(e, lo, hi): how far e lies outside [lo, hi], signed (branch-free: at most one term is not 0).</summary>
+        /// <summary>
+        /// e − clamp(e, lo, hi): how far e lies outside [lo, hi], signed (branch-free: at most one term is not 0). With
+        /// Num's minsd/maxsd, one instruction each where Math.Min/Max compile to three under AVX-512. Num's precondition
+        /// can fail here in one harmless way: e − lo = −0 against 0 gives −0 or +0 by build, but the Max term is then +0
+        /// under either rule (max of ±0 and +0), so the sum is +0 on both. A NaN (from an overflowed difference) can
+        /// only arise where the range check has already sent the query to the slow path.
+        /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double Outside(double e, double lo, double hi) => Math.Min(e - lo, 0) + Math.Max(e - hi, 0);
+        private static double Outside(double e, double lo, double hi) => Num.Min(e - lo, 0) + Num.Max(e - hi, 0);
 
         /// <summary>
         /// Shrinks the bracket [left, right] of the minimum with breakpoint b (skipped outside the bracket, and when not a
@@ -87,8 +93,12 @@ namespace ProximityLib.Double
 
         /// <summary>The box point nearest to the box-local point e, in world coordinates.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static Vector3D ClampToBox(in Box box, Vector3D e) =>
-            box.Origin + box.ToWorldOffset(new Vector3D(Num.Clamp(e.X, box.Lo.X, box.Hi.X), Num.Clamp(e.Y, box.Lo.Y, box.Hi.Y), Num.Clamp(e.Z, box.Lo.Z, box.Hi.Z)));
+        private static Vector3D ClampToBox(in Box box, Vector3D e) => box.Origin + box.ToWorldOffset(ClampLocal(e, box.Lo, box.Hi));
+
+        /// <summary>The point of [lo, hi] nearest to e (all box-local).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector3D ClampLocal(Vector3D e, Vector3D lo, Vector3D hi) =>
+            new Vector3D(Num.Clamp(e.X, lo.X, hi.X), Num.Clamp(e.Y, lo.Y, hi.Y), Num.Clamp(e.Z, lo.Z, hi.Z));
 
         /// <summary>Closest points of a segment and a box when they are apart (squared distance 0 when they meet).</summary>
         public static double SegmentBoxSeparated(Vector3D a, Vector3D b, in Box box, out double t, out Vector3D onSegment, out Vector3D onBox)
@@ -102,39 +112,69 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
-        /// Segment against a solid box, in the box frame. Apart (by the separating-axis verdict that Overlaps gives): the
-        /// piecewise-quadratic minimum above. Meeting: the minimum translation over the separating-axis candidates of the
-        /// Minkowski sum (box normals and segment × box edges), each evaluated on its own normalised direction so a noisy
-        /// near-degenerate axis can only overestimate; the witness points are the closest points of the just-touching
-        /// configuration, moved back.
+        /// Segment against a solid box, in the box frame (<see cref="InFrame"/>); the box witness mapped back to world.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
         public static DistanceResult3 SegmentBox(Vector3D a, Vector3D b, in Box box, out bool inRange)
         {
             var ra = a - box.Origin;
             inRange = Range.Box(Math.Max(Range.MaxAbs(ra), Math.Max(Range.MaxAbs(b - box.Origin), Range.MaxAbs(box.Hi - box.Lo))));
-            var la = box.ToLocal(ra);
-            var ld = box.ToLocal(b - a);
-            var lo = box.Lo;
-            var hi = box.Hi;
+            double dist = InFrame(box.ToLocal(ra), box.ToLocal(b - a), box.Lo, box.Hi, box.Planar, ref inRange, out double d2, out double t, out var onBox, out bool touching);
+            var onSegment = SegmentPoint(a, b, t);
+            return new DistanceResult3(dist, d2, onSegment, touching ? onSegment : box.Origin + box.ToWorldOffset(onBox), t, 0);
+        }
+
+        /// <summary>
+        /// <see cref="SegmentBox"/> for an AABB given by its corners, without the rotations: its frame is the world's
+        /// shifted to min, where a dot product with a unit axis, and the map back, are exact, so the answer is the one
+        /// through <see cref="Aabb3.ToBox"/> and Aabb2.ToBox (up to the sign of a zero coordinate). The identity rotations cost the 2D
+        /// query a fifth of its time (ab, .NET 10: 47 → 38 ns; 3D 62 → 59).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static DistanceResult3 SegmentAabb(Vector3D a, Vector3D b, Vector3D min, Vector3D max, bool planar, out bool inRange)
+        {
+            var ra = a - min;
+            var extent = max - min;
+            inRange = Range.Box(Math.Max(Range.MaxAbs(ra), Math.Max(Range.MaxAbs(b - min), Range.MaxAbs(extent))));
+            double dist = InFrame(ra, b - a, default, extent, planar, ref inRange, out double d2, out double t, out var onBox, out bool touching);
+            var onSegment = SegmentPoint(a, b, t);
+            return new DistanceResult3(dist, d2, onSegment, touching ? onSegment : min + onBox, t, 0);
+        }
+
+        /// <summary>
+        /// Segment la + [0, 1]·ld against the box [lo, hi], all box-local: the signed distance, its square (0 when they
+        /// meet), the segment parameter and the box witness (box-local; <paramref name="touching"/>: it is the segment's
+        /// point). Apart (by the separating-axis verdict that Overlaps gives): the piecewise-quadratic minimum above.
+        /// Meeting: the minimum translation over the separating-axis candidates of the Minkowski sum (box normals and
+        /// segment × box edges), each evaluated on its own normalised direction so a noisy near-degenerate axis can only
+        /// overestimate; the witness points are the closest points of the just-touching configuration, moved back.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double InFrame(Vector3D la, Vector3D ld, Vector3D lo, Vector3D hi, bool planar, ref bool inRange,
+            out double d2, out double t, out Vector3D onBox, out bool touching)
+        {
             var c = (lo + hi) * 0.5;
             var h = (hi - lo) * 0.5;
             // The separating-axis verdict decides which side we are on: the squared gap alone would call a segment
             // crossing a zero-thickness box "apart" by rounding.
-            if (!SegmentBoxOverlapsLocal(la - c, ld, h, box.Planar))
+            if (!SegmentBoxOverlapsLocal(la - c, ld, h, planar))
             {
-                double g = SegmentBoxLocal(la, ld, lo, hi, out double t);
+                d2 = SegmentBoxLocal(la, ld, lo, hi, out t);
                 // A subnormal squared gap has lost bits: the slow path answers it at a scale where it has not.
-                inRange &= g == 0 || Range.In(g);
-                return new DistanceResult3(Math.Sqrt(g), g, SegmentPoint(a, b, t), ClampToBox(box, la + ld * t), t, 0);
+                inRange &= d2 == 0 || Range.In(d2);
+                onBox = ClampLocal(la + ld * t, lo, hi);
+                touching = false;
+                return Math.Sqrt(d2);
             }
 
-            double depth = Math.Max(0, SegmentBoxPenetration(la - c, ld, h, box.Planar, out var dir));
+            double depth = Math.Max(0, SegmentBoxPenetration(la - c, ld, h, planar, out var dir));
             // The segment moved by the push just touches the box: its closest pair there, the segment's point moved back.
             var moved = la + dir * depth;
-            SegmentBoxLocal(moved, ld, lo, hi, out double tp);
-            var onSegment = SegmentPoint(a, b, tp);
-            return new DistanceResult3(-depth, 0, onSegment, depth > 0 ? ClampToBox(box, moved + ld * tp) : onSegment, tp, 0);
+            SegmentBoxLocal(moved, ld, lo, hi, out t);
+            d2 = 0;
+            onBox = ClampLocal(moved + ld * t, lo, hi);
+            touching = !(depth > 0);
+            return -depth;
         }
 
         /// <summary>
@@ -234,7 +274,7 @@ namespace ProximityLib.Double
         private static bool SlabSeparates(double m, double d, double h)
         {
             double e = m + d;
-            return Math.Min(m, e) > h || Math.Max(m, e) < -h;
+            return Num.Min(m, e) > h || Num.Max(m, e) < -h;
         }
     }
 }
