@@ -8,25 +8,12 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a ray and a ray (3D): never negative; where the minimum is not unique (parallel rays) the canonically first ray's origin and its nearest point on the other when that is no farther, else the other's origin and its nearest point on the first (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the rays' t ≥ 0. Algorithm: the lines' closest parameters from the common normal dA × dB formed with exact products (Dekker); when either is negative, the better of each origin against the other ray (convex objective: the minimum lies on the boundary of the parameter quadrant; Eberly, distance between linear components).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult3 Core(Ray3 a, Ray3 b, out bool inRange)
-        {
-            // One call site, so the kernel is inlined once rather than once per order: two copies ran 1.5-3x slower.
-            bool swap = Order.Swap(a.Origin, a.Direction, b.Origin, b.Direction);
-            var p = swap ? b : a;
-            var q = swap ? a : b;
-            var r = Kernels.UnboundedPair(p.Origin, p.Direction, true, q.Origin, q.Direction, true, out inRange);
-            return swap ? r.Swapped() : r;
-        }
+        internal static DistanceResult3 Core(Ray3 a, Ray3 b, out bool inRange) =>
+            Kernels.OrderedUnboundedPair(a.Origin, a.Direction, b.Origin, b.Direction, true, out inRange);
         /// <summary>Closest distance between a ray and a ray (2D): never negative (0 where they cross); where the minimum is not unique (parallel rays) the canonically first ray's origin and its nearest point on the other when that is no farther, else the other's origin and its nearest point on the first (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the rays' t ≥ 0. Algorithm: the lines' crossing parameters from the cross product formed with exact products (Dekker); when either is negative, the better of each origin against the other ray (Eberly, distance between linear components).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult2 Core(Ray2 a, Ray2 b, out bool inRange)
-        {
-            bool swap = Order.Swap(a.Origin.To3(), a.Direction.To3(), b.Origin.To3(), b.Direction.To3());
-            var p = swap ? b : a;
-            var q = swap ? a : b;
-            var r = Kernels.UnboundedPair(p.Origin.To3(), p.Direction.To3(), true, q.Origin.To3(), q.Direction.To3(), true, out inRange);
-            return (swap ? r.Swapped() : r).To2();
-        }
+        internal static DistanceResult2 Core(Ray2 a, Ray2 b, out bool inRange) =>
+            Kernels.OrderedUnboundedPair(a.Origin.To3(), a.Direction.To3(), b.Origin.To3(), b.Direction.To3(), true, out inRange).To2();
     }
 
     public static partial class ProximityQuery
