@@ -98,17 +98,6 @@ namespace ProximityLib.Double
         private static Vector3D ClampLocal(Vector3D e, Vector3D lo, Vector3D hi) =>
             new Vector3D(Num.Clamp(e.X, lo.X, hi.X), Num.Clamp(e.Y, lo.Y, hi.Y), Num.Clamp(e.Z, lo.Z, hi.Z));
 
-        /// <summary>Closest points of a segment and a box when they are apart (squared distance 0 when they meet).</summary>
-        public static double SegmentBoxSeparated(Vector3D a, Vector3D b, in Box box, out double t, out Vector3D onSegment, out Vector3D onBox)
-        {
-            var la = box.ToLocal(a - box.Origin);
-            var ld = box.ToLocal(b - a);
-            double g = SegmentBoxLocal(la, ld, box.Lo, box.Hi, out t);
-            onSegment = SegmentPoint(a, b, t);
-            onBox = ClampToBox(box, la + ld * t);
-            return g;
-        }
-
         /// <summary>
         /// Segment against a solid box, in the box frame (<see cref="InFrame"/>); the box witness mapped back to world.
         /// </summary>
