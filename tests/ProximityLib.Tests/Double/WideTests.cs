@@ -22,8 +22,8 @@ namespace ProximityTests.Double
         }
 
         /// <summary>
-        /// Ball verdicts d² ≤ r² trust the fast comparison only when the larger square is in range
-        /// (<c>Range.LargerIn</c>). Each case here has one or both squares outside [2^-960, 2^960], and the expected verdict
+        /// Ball verdicts d² ≤ r² trust the fast comparison only when r² is in range (<c>Kernels.WithinRadius</c>; a line's
+        /// residual is checked too, <c>Kernels.LinearInBall</c>). Each case here has one or both squares outside [2^-960, 2^960], and the expected verdict
         /// follows from the inputs by hand: points 1e-170 apart are apart, however small their squared gap rounds. Every
         /// configuration is at one scale, so the tolerance band (relative to that scale) cannot excuse a wrong verdict.
         /// </summary>
@@ -46,6 +46,27 @@ namespace ProximityTests.Double
             // residual's square is NaN.
             Assert.That(ProximityQuery.Overlaps(new Line3(V(-1e308, 0, 0), V(1, 0, 0)), new Sphere(V(1e308, 5e307, 0), 6e307)), Is.True);
             Assert.That(ProximityQuery.Overlaps(new Line3(V(-1e308, 0, 0), V(1, 0, 0)), new Sphere(V(1e308, 5e307, 0), 4e307)), Is.False);
+        }
+
+        /// <summary>
+        /// With r² in range, a squared distance that overflowed (∞, or NaN from an overflowed difference times a zero
+        /// component) is trusted to mean "far": it does for a difference of points, a box of moderate size and a segment
+        /// of length in range, whose every point lies near its ends. These fail if the fast path misreads ∞ or NaN.
+        /// </summary>
+        [Test]
+        public void BallVerdictsWhereTheGapOverflows()
+        {
+            var far = new Sphere(V(1e308, 0, 0), 1);
+            Assert.That(ProximityQuery.Overlaps(new Sphere(V(-1e308, 0, 0), 1), far), Is.False);
+            Assert.That(ProximityQuery.Overlaps(V(-1e308, -1e308, 0), far), Is.False);
+            Assert.That(ProximityQuery.Overlaps(new Segment3(V(-1e308, 0, 0), V(-1e308, 1, 0)), far), Is.False);
+            Assert.That(ProximityQuery.Overlaps(new Capsule3(V(-1e308, 0, 0), V(-1e308, 1, 0), 1), far), Is.False);
+            Assert.That(ProximityQuery.Overlaps(Aabb3.FromCenter(V(-1e308, 0, 0), V(1, 1, 1)), far), Is.False);
+            Assert.That(ProximityQuery.Overlaps(new Obb3(V(-1e308, 0, 0), V(1, 0, 0), V(0, 1, 0), V(0, 0, 1), V(1, 1, 1)), far), Is.False);
+            // The same shapes next to the ball: the fast path's true verdicts.
+            var near = new Sphere(V(-1e308, 0, 0), 1);
+            Assert.That(ProximityQuery.Overlaps(new Segment3(V(-1e308, 0.5, 0), V(-1e308, 1, 0)), near), Is.True);
+            Assert.That(ProximityQuery.Overlaps(Aabb3.FromCenter(V(-1e308, 1.5, 0), V(1, 1, 1)), near), Is.True);
         }
 
         [Test]

@@ -68,6 +68,7 @@ namespace ProximityLib
         /// it brings m into [2^−52, 4), where sums of a few squares neither overflow nor underflow, and multiplying by it
         /// is exact. Math.ScaleB/ILogB are not in netstandard2.1.
         /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         public static double InversePowerOfTwo(double m)
         {
             long exponent = ((BitConverter.DoubleToInt64Bits(m) >> 52) & 0x7FF) - 1023;

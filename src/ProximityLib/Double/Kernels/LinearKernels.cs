@@ -367,8 +367,9 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// Whether the line or ray meets the closed ball: the squared residual of <see cref="PointLinear"/> against r².
-        /// <paramref name="inRange"/>: the larger square in the fast range (as <see cref="WithinRadius"/>); an overflowed
-        /// difference makes r² NaN, which that check fails.
+        /// <paramref name="inRange"/>: the larger square in the fast range. Unlike <see cref="WithinRadius"/>, the residual
+        /// is checked too: an origin so far from the center that their difference overflows (r² ∞ or NaN) does not make
+        /// the line far from it.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool LinearInBall(Vector3D center, Vector3D o, Vector3D d, bool ray, double radius, out bool inRange)
@@ -376,18 +377,15 @@ namespace ProximityLib.Double
             var w = center - o;
             double t = Vector3D.Dot(w, d);
             if (ray && t <= 0) t = 0;
-            double r2 = (t == 0 ? w : w - d * t).LengthSquared;
-            return WithinRadius(r2, radius, out inRange);
+            double r2 = (t == 0 ? w : w - d * t).LengthSquared, rr = radius * radius;
+            inRange = Range.LargerIn(rr, r2);
+            return r2 <= rr;
         }
 
-        /// <summary>Whether the capsule axis [b0, b1] comes within r (the sum of the radii) of c; <paramref name="inRange"/> as for <see cref="SegmentInSphere"/>, and the sum finite.</summary>
+        /// <summary>Whether the capsule axis [b0, b1] comes within r (the sum of the radii) of c; <paramref name="inRange"/> as for <see cref="SegmentInSphere"/> (an infinite sum fails its r² check).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool CapsuleTouchesBall(Vector3D b0, Vector3D b1, Vector3D c, double r, out bool inRange)
-        {
-            bool inside = SegmentInSphere(b0, b1, c, r, out inRange);
-            inRange &= r <= double.MaxValue;
-            return inside;
-        }
+        public static bool CapsuleTouchesBall(Vector3D b0, Vector3D b1, Vector3D c, double r, out bool inRange) =>
+            SegmentInSphere(b0, b1, c, r, out inRange);
 
         /// <summary>Whether capsule b comes strictly before capsule a: by axis (<see cref="Order.Swap(Vector3D, Vector3D, Vector3D, Vector3D)"/>), equal axes by radius.</summary>
         public static bool SwapCapsules(Vector3D a0, Vector3D a1, double ra, Vector3D b0, Vector3D b1, double rb) =>
