@@ -197,23 +197,23 @@ namespace ProximityApiGen
             {
                 w.Doc(k.Summary!);
                 w.Inline();
-                Guarded(w, $"public static {k.Result} Between({k.A.Double} a, {k.B.Double} b)", "Core", k.Guarded, "Slow(a, b)");
-                if (!k.SameTypes) w.Method($"Closest distance between {k.SwappedPair}: the swapped call, with PointA/PointB and parameters swapped.", $"public static {k.Result} Between({k.B.Double} a, {k.A.Double} b) => Between(b, a).Swapped();");
+                Guarded(w, $"public static {k.Result} Between(in {k.A.Double} a, in {k.B.Double} b)", "Core", k.Guarded, "Slow(a, b)");
+                if (!k.SameTypes) w.Method($"Closest distance between {k.SwappedPair}: the swapped call, with PointA/PointB and parameters swapped.", $"public static {k.Result} Between(in {k.B.Double} a, in {k.A.Double} b) => Between(b, a).Swapped();");
             }
             foreach (var k in between)
             {
                 var d = distance.FirstOrDefault(x => x.A.Double == k.A.Double && x.B.Double == k.B.Double);
-                w.Doc($"Signed closest distance between {k.Pair} without the witness points: the Distance of <see cref=\"Between({k.A.Double}, {k.B.Double})\"/>, bit for bit.");
+                w.Doc($"Signed closest distance between {k.Pair} without the witness points: the Distance of <see cref=\"Between(in {k.A.Double}, in {k.B.Double})\"/>, bit for bit.");
                 w.Inline();
-                if (d == null) w.Line($"public static double Distance({k.A.Double} a, {k.B.Double} b) => Between(a, b).Distance;");
-                else Guarded(w, $"public static double Distance({k.A.Double} a, {k.B.Double} b)", "DistanceCore", d.Guarded, "Slow(a, b).Distance");
-                if (!k.SameTypes) w.Method($"Signed closest distance between {k.SwappedPair}: Distance(b, a).", $"public static double Distance({k.B.Double} a, {k.A.Double} b) => Distance(b, a);");
+                if (d == null) w.Line($"public static double Distance(in {k.A.Double} a, in {k.B.Double} b) => Between(a, b).Distance;");
+                else Guarded(w, $"public static double Distance(in {k.A.Double} a, in {k.B.Double} b)", "DistanceCore", d.Guarded, "Slow(a, b).Distance");
+                if (!k.SameTypes) w.Method($"Signed closest distance between {k.SwappedPair}: Distance(b, a).", $"public static double Distance(in {k.B.Double} a, in {k.A.Double} b) => Distance(b, a);");
             }
             w.Line();
             foreach (var k in between.Where(k => k.Guarded))
             {
                 w.Line("[MethodImpl(MethodImplOptions.NoInlining)]");
-                w.Line($"private static {k.Result} Slow({k.A.Double} a, {k.B.Double} b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));");
+                w.Line($"private static {k.Result} Slow(in {k.A.Double} a, in {k.B.Double} b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));");
             }
             w.Close();
             w.Line();
@@ -223,14 +223,14 @@ namespace ProximityApiGen
             {
                 w.Doc(k.Summary ?? $"Whether {k.Pair} touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.");
                 w.Inline();
-                Guarded(w, $"public static bool Overlaps({k.A.Double} a, {k.B.Double} b)", "Core", k.Guarded, "Slow(a, b)");
-                if (!k.SameTypes) w.Method($"Whether {k.SwappedPair} touch or overlap: Overlaps(b, a).", $"public static bool Overlaps({k.B.Double} a, {k.A.Double} b) => Overlaps(b, a);");
+                Guarded(w, $"public static bool Overlaps(in {k.A.Double} a, in {k.B.Double} b)", "Core", k.Guarded, "Slow(a, b)");
+                if (!k.SameTypes) w.Method($"Whether {k.SwappedPair} touch or overlap: Overlaps(b, a).", $"public static bool Overlaps(in {k.B.Double} a, in {k.A.Double} b) => Overlaps(b, a);");
             }
             if (overlaps.Any(k => k.Guarded)) w.Line();
             foreach (var k in overlaps.Where(k => k.Guarded))
             {
                 w.Line("[MethodImpl(MethodImplOptions.NoInlining)]");
-                w.Line($"private static bool Slow({k.A.Double} a, {k.B.Double} b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));");
+                w.Line($"private static bool Slow(in {k.A.Double} a, in {k.B.Double} b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));");
             }
             w.Close();
             w.Close();

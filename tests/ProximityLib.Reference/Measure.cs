@@ -89,9 +89,9 @@ namespace ProximityReference
             var rb = RShape.FromAny(c.B);
             var exact = Exact.SignedDistance(ra, rb);
             double scale = Exact.Scale(ra, rb);
-            double d = ClosestDistance.Between((dynamic)c.A, (dynamic)c.B).Distance;
-            double ds = ClosestDistance.Between((dynamic)c.B, (dynamic)c.A).Distance;
-            bool overlaps = ProximityQuery.Overlaps((dynamic)c.A, (dynamic)c.B);
+            double d = Api.BetweenDistance(c.A, c.B);
+            double ds = Api.BetweenDistance(c.B, c.A);
+            bool overlaps = Api.Overlaps(c.A, c.B);
             bool decided = Math.Abs(exact.ToDouble()) > Band * UDouble * scale;
 
             // The float API on the same inputs rounded to float, against the exact answer for those rounded inputs.
@@ -106,12 +106,12 @@ namespace ProximityReference
                 var frb = RShape.FromAny(Shapes.Widen(fb));
                 var fexact = Exact.SignedDistance(fra, frb);
                 double fscale = Exact.Scale(fra, frb);
-                float df = ProximityLib.ClosestDistance.Between((dynamic)fa, (dynamic)fb).Distance;
+                float df = (float)Api.BetweenDistance(fa, fb);
                 if (fscale > 0 && double.IsFinite(fscale) && fscale < 1e30)
                 {
                     floatMeasured = true;
                     ef = Exact.Error(df, fexact, UFloat, fscale);
-                    bool fo = ProximityLib.ProximityQuery.Overlaps((dynamic)fa, (dynamic)fb);
+                    bool fo = Api.Overlaps(fa, fb);
                     // The batch runs in float lanes: inside its documented safe range only (squares of the configuration's
                     // size must stay normal floats).
                     float? db = fscale >= BatchMinScale && fscale <= BatchMaxScale ? Batch(fa, fb) ?? Batch(fb, fa) : null;

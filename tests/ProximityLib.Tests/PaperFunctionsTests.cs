@@ -38,7 +38,8 @@ namespace ProximityTests
         private static System.Reflection.MethodInfo? Find(string ns, string qualified, string method, string a, string b)
         {
             var type = typeof(ClosestDistance).Assembly.GetType($"{ns}.{qualified.Split('.')[0]}", true)!;
-            return type.GetMethod(method, new[] { Type(ns, a), Type(ns, b) });
+            // The double API's shapes are in parameters: its signature has the by-reference types.
+            return type.GetMethod(method, new[] { Type(ns, a), Type(ns, b) }) ?? type.GetMethod(method, new[] { Type(ns, a).MakeByRefType(), Type(ns, b).MakeByRefType() });
         }
 
         private static Type Type(string ns, string name) => name switch

@@ -10,47 +10,47 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between an AABB and an AABB (3D): negative when overlapping (least per-axis overlap); shared intervals put the witnesses at their middle. Algorithm: per-axis interval gaps (paper Eq. 18).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, Aabb3 b)
+        public static DistanceResult3 Between(in Aabb3 a, in Aabb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an AABB and an AABB (2D): negative when overlapping (least per-axis overlap); shared intervals put the witnesses at their middle. Algorithm: per-axis interval gaps (paper Eq. 18).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, Aabb2 b)
+        public static DistanceResult2 Between(in Aabb2 a, in Aabb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
-        /// <summary>Signed closest distance between an AABB and an AABB (3D) without the witness points: the Distance of <see cref="Between(Aabb3, Aabb3)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between an AABB and an AABB (3D) without the witness points: the Distance of <see cref="Between(in Aabb3, in Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb3 a, Aabb3 b)
+        public static double Distance(in Aabb3 a, in Aabb3 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
-        /// <summary>Signed closest distance between an AABB and an AABB (2D) without the witness points: the Distance of <see cref="Between(Aabb2, Aabb2)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between an AABB and an AABB (2D) without the witness points: the Distance of <see cref="Between(in Aabb2, in Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb2 a, Aabb2 b)
+        public static double Distance(in Aabb2 a, in Aabb2 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Aabb3 a, Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Aabb3 a, in Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Aabb2 a, Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Aabb2 a, in Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether an AABB and an AABB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb3 a, Aabb3 b) => Core(a, b);
+        public static bool Overlaps(in Aabb3 a, in Aabb3 b) => Core(a, b);
         /// <summary>Whether an AABB and an AABB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb2 a, Aabb2 b) => Core(a, b);
+        public static bool Overlaps(in Aabb2 a, in Aabb2 b) => Core(a, b);
     }
 }
 

@@ -10,78 +10,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between an AABB and an OBB (3D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 15 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; when apart, the closed forms on the features that can hold the closest pair (every vertex against the other box; in 3D the edges that descend from both ends).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, Obb3 b)
+        public static DistanceResult3 Between(in Aabb3 a, in Obb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an OBB and an AABB (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Obb3 a, Aabb3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Obb3 a, in Aabb3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between an AABB and an OBB (2D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 4 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; when apart, the closed forms on the features that can hold the closest pair (every vertex against the other box; in 3D the edges that descend from both ends).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, Obb2 b)
+        public static DistanceResult2 Between(in Aabb2 a, in Obb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an OBB and an AABB (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Obb2 a, Aabb2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between an AABB and an OBB (3D) without the witness points: the Distance of <see cref="Between(Aabb3, Obb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Obb2 a, in Aabb2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between an AABB and an OBB (3D) without the witness points: the Distance of <see cref="Between(in Aabb3, in Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb3 a, Obb3 b)
+        public static double Distance(in Aabb3 a, in Obb3 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between an OBB and an AABB (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Obb3 a, Aabb3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between an AABB and an OBB (2D) without the witness points: the Distance of <see cref="Between(Aabb2, Obb2)"/>, bit for bit.</summary>
+        public static double Distance(in Obb3 a, in Aabb3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between an AABB and an OBB (2D) without the witness points: the Distance of <see cref="Between(in Aabb2, in Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb2 a, Obb2 b)
+        public static double Distance(in Aabb2 a, in Obb2 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between an OBB and an AABB (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Obb2 a, Aabb2 b) => Distance(b, a);
+        public static double Distance(in Obb2 a, in Aabb2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Aabb3 a, Obb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Aabb3 a, in Obb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Aabb2 a, Obb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Aabb2 a, in Obb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether an AABB and an OBB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb3 a, Obb3 b)
+        public static bool Overlaps(in Aabb3 a, in Obb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an OBB and an AABB (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb3 a, Aabb3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb3 a, in Aabb3 b) => Overlaps(b, a);
         /// <summary>Whether an AABB and an OBB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb2 a, Obb2 b)
+        public static bool Overlaps(in Aabb2 a, in Obb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an OBB and an AABB (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb2 a, Aabb2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb2 a, in Aabb2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Aabb3 a, Obb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Aabb3 a, in Obb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Aabb2 a, Obb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Aabb2 a, in Obb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

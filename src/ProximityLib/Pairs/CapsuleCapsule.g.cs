@@ -10,52 +10,52 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a capsule and a capsule (3D): negative when they overlap (depth = sum of the radii − distance of the axes: their Minkowski difference is flat); witnesses pushed by each radius along the unit residual of the axes' closest pair, for meeting axes along the common normal (parallel axes: <c>AnyPerpendicular</c> of the first direction); parallel overlapping axes: the segment kernel's first endpoint minimum; computed on the canonically ordered pair (src/ProximityLib/Double/Order.cs, then the radius), so the same in either argument order; ParameterA/B are the axis parameters. Algorithm: robust segment–segment distance of the axes (Eberly; Lagrange-identity determinant) less both radii.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Capsule3 a, Capsule3 b)
+        public static DistanceResult3 Between(in Capsule3 a, in Capsule3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a capsule and a capsule (2D): negative when they overlap; separated axes give their distance less both radii; crossing axes give −(both radii + the crossing depth of the axes, the smallest push of one axis off the other along a face normal of their Minkowski difference), the witnesses an endpoint and its image across that face pushed by the radii; computed on the canonically ordered pair (src/ProximityLib/Double/Order.cs, then the radius), so the same in either argument order; ParameterA/B are the axis parameters. Algorithm: robust segment–segment distance of the axes (Eberly) less both radii; crossing depth by the separating-axis test over the axes' normals and directions (Gottschalk).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Capsule2 a, Capsule2 b)
+        public static DistanceResult2 Between(in Capsule2 a, in Capsule2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
-        /// <summary>Signed closest distance between a capsule and a capsule (3D) without the witness points: the Distance of <see cref="Between(Capsule3, Capsule3)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a capsule and a capsule (3D) without the witness points: the Distance of <see cref="Between(in Capsule3, in Capsule3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Capsule3 a, Capsule3 b) => Between(a, b).Distance;
-        /// <summary>Signed closest distance between a capsule and a capsule (2D) without the witness points: the Distance of <see cref="Between(Capsule2, Capsule2)"/>, bit for bit.</summary>
+        public static double Distance(in Capsule3 a, in Capsule3 b) => Between(a, b).Distance;
+        /// <summary>Signed closest distance between a capsule and a capsule (2D) without the witness points: the Distance of <see cref="Between(in Capsule2, in Capsule2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Capsule2 a, Capsule2 b) => Between(a, b).Distance;
+        public static double Distance(in Capsule2 a, in Capsule2 b) => Between(a, b).Distance;
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Capsule3 a, Capsule3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Capsule3 a, in Capsule3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Capsule2 a, Capsule2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Capsule2 a, in Capsule2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a capsule and a capsule (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule3 a, Capsule3 b)
+        public static bool Overlaps(in Capsule3 a, in Capsule3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a capsule and a capsule (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule2 a, Capsule2 b)
+        public static bool Overlaps(in Capsule2 a, in Capsule2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Capsule3 a, Capsule3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Capsule3 a, in Capsule3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Capsule2 a, Capsule2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Capsule2 a, in Capsule2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -10,78 +10,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a half-space and an AABB (3D): the height Normal·(x − Point) of the box's lowest point x, negative when the box enters (minus the depth); witnesses the foot of that point on the boundary and the point itself. Where a face or edge is parallel to the boundary the point is the middle of the lowest face or edge. Algorithm: support point of the box along −Normal in the box frame (Ericson RTCD §5.2.3), measured from the stored boundary point.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(HalfSpace a, Aabb3 b)
+        public static DistanceResult3 Between(in HalfSpace a, in Aabb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an AABB and a half-space (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, HalfSpace b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Aabb3 a, in HalfSpace b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a half-plane and an AABB (2D): the height Normal·(x − Point) of the box's lowest point x, negative when the box enters (minus the depth); witnesses the foot of that point on the boundary and the point itself. Where a face or edge is parallel to the boundary the point is the middle of the lowest face or edge. Algorithm: support point of the box along −Normal in the box frame (Ericson RTCD §5.2.3), measured from the stored boundary point.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Aabb2 b)
+        public static DistanceResult2 Between(in HalfPlane a, in Aabb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an AABB and a half-plane (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, HalfPlane b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a half-space and an AABB (3D) without the witness points: the Distance of <see cref="Between(HalfSpace, Aabb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Aabb2 a, in HalfPlane b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a half-space and an AABB (3D) without the witness points: the Distance of <see cref="Between(in HalfSpace, in Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfSpace a, Aabb3 b)
+        public static double Distance(in HalfSpace a, in Aabb3 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between an AABB and a half-space (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb3 a, HalfSpace b) => Distance(b, a);
-        /// <summary>Signed closest distance between a half-plane and an AABB (2D) without the witness points: the Distance of <see cref="Between(HalfPlane, Aabb2)"/>, bit for bit.</summary>
+        public static double Distance(in Aabb3 a, in HalfSpace b) => Distance(b, a);
+        /// <summary>Signed closest distance between a half-plane and an AABB (2D) without the witness points: the Distance of <see cref="Between(in HalfPlane, in Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfPlane a, Aabb2 b)
+        public static double Distance(in HalfPlane a, in Aabb2 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between an AABB and a half-plane (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb2 a, HalfPlane b) => Distance(b, a);
+        public static double Distance(in Aabb2 a, in HalfPlane b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(HalfSpace a, Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in HalfSpace a, in Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(HalfPlane a, Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in HalfPlane a, in Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a half-space and an AABB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, Aabb3 b)
+        public static bool Overlaps(in HalfSpace a, in Aabb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an AABB and a half-space (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb3 a, HalfSpace b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb3 a, in HalfSpace b) => Overlaps(b, a);
         /// <summary>Whether a half-plane and an AABB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, Aabb2 b)
+        public static bool Overlaps(in HalfPlane a, in Aabb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an AABB and a half-plane (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb2 a, HalfPlane b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb2 a, in HalfPlane b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(HalfSpace a, Aabb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in HalfSpace a, in Aabb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(HalfPlane a, Aabb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in HalfPlane a, in Aabb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

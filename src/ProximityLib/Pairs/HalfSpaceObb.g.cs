@@ -10,78 +10,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a half-space and an OBB (3D): the height Normal·(x − Point) of the box's lowest point x, negative when the box enters (minus the depth); witnesses the foot of that point on the boundary and the point itself. Where a face or edge is parallel to the boundary the point is the middle of the lowest face or edge. Algorithm: support point of the box along −Normal in the box frame (Ericson RTCD §5.2.3), measured from the stored boundary point.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(HalfSpace a, Obb3 b)
+        public static DistanceResult3 Between(in HalfSpace a, in Obb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an OBB and a half-space (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Obb3 a, HalfSpace b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Obb3 a, in HalfSpace b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a half-plane and an OBB (2D): the height Normal·(x − Point) of the box's lowest point x, negative when the box enters (minus the depth); witnesses the foot of that point on the boundary and the point itself. Where a face or edge is parallel to the boundary the point is the middle of the lowest face or edge. Algorithm: support point of the box along −Normal in the box frame (Ericson RTCD §5.2.3), measured from the stored boundary point.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Obb2 b)
+        public static DistanceResult2 Between(in HalfPlane a, in Obb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an OBB and a half-plane (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Obb2 a, HalfPlane b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a half-space and an OBB (3D) without the witness points: the Distance of <see cref="Between(HalfSpace, Obb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Obb2 a, in HalfPlane b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a half-space and an OBB (3D) without the witness points: the Distance of <see cref="Between(in HalfSpace, in Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfSpace a, Obb3 b)
+        public static double Distance(in HalfSpace a, in Obb3 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between an OBB and a half-space (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Obb3 a, HalfSpace b) => Distance(b, a);
-        /// <summary>Signed closest distance between a half-plane and an OBB (2D) without the witness points: the Distance of <see cref="Between(HalfPlane, Obb2)"/>, bit for bit.</summary>
+        public static double Distance(in Obb3 a, in HalfSpace b) => Distance(b, a);
+        /// <summary>Signed closest distance between a half-plane and an OBB (2D) without the witness points: the Distance of <see cref="Between(in HalfPlane, in Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfPlane a, Obb2 b)
+        public static double Distance(in HalfPlane a, in Obb2 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between an OBB and a half-plane (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Obb2 a, HalfPlane b) => Distance(b, a);
+        public static double Distance(in Obb2 a, in HalfPlane b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(HalfSpace a, Obb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in HalfSpace a, in Obb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(HalfPlane a, Obb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in HalfPlane a, in Obb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a half-space and an OBB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, Obb3 b)
+        public static bool Overlaps(in HalfSpace a, in Obb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an OBB and a half-space (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb3 a, HalfSpace b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb3 a, in HalfSpace b) => Overlaps(b, a);
         /// <summary>Whether a half-plane and an OBB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, Obb2 b)
+        public static bool Overlaps(in HalfPlane a, in Obb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an OBB and a half-plane (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb2 a, HalfPlane b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb2 a, in HalfPlane b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(HalfSpace a, Obb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in HalfSpace a, in Obb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(HalfPlane a, Obb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in HalfPlane a, in Obb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

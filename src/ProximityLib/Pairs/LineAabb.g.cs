@@ -10,70 +10,70 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a line and an AABB (3D): negative when the line passes through the box: minus the least sideways translation (perpendicular to the line) that clears it. Witnesses: ParameterA t with PointA = Origin + t·Direction; where the closest points are not unique (the line parallel to a face or an edge), the end of the stretch of closest points where the bracketing of the convex distance function first lands (a breakpoint where the line crosses a slab plane of the box). Algorithm: in the box frame relative to its centre, the line clipped to the box's projection onto it (widened) and minimised as a segment (convex piecewise quadratic, Ericson RTCD §5.3.3 for the separating axes); depth over the axes Direction × box axis.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, Aabb3 b)
+        public static DistanceResult3 Between(in Line3 a, in Aabb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an AABB and a line (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, Line3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Aabb3 a, in Line3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a line and an AABB (2D): negative when the line passes through the box: minus the least sideways translation (perpendicular to the line) that clears it. Witnesses: ParameterA t with PointA = Origin + t·Direction; where the closest points are not unique (the line parallel to a face or an edge), the end of the stretch of closest points where the bracketing of the convex distance function first lands (a breakpoint where the line crosses a slab plane of the box). Algorithm: in the box frame relative to its centre, the line clipped to the box's projection onto it (widened) and minimised as a segment (convex piecewise quadratic, Ericson RTCD §5.3.3 for the separating axes); depth over the axes Direction × box axis.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, Aabb2 b)
+        public static DistanceResult2 Between(in Line2 a, in Aabb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an AABB and a line (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, Line2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a line and an AABB (3D) without the witness points: the Distance of <see cref="Between(Line3, Aabb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Aabb2 a, in Line2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a line and an AABB (3D) without the witness points: the Distance of <see cref="Between(in Line3, in Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line3 a, Aabb3 b) => Between(a, b).Distance;
+        public static double Distance(in Line3 a, in Aabb3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an AABB and a line (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb3 a, Line3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a line and an AABB (2D) without the witness points: the Distance of <see cref="Between(Line2, Aabb2)"/>, bit for bit.</summary>
+        public static double Distance(in Aabb3 a, in Line3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a line and an AABB (2D) without the witness points: the Distance of <see cref="Between(in Line2, in Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line2 a, Aabb2 b) => Between(a, b).Distance;
+        public static double Distance(in Line2 a, in Aabb2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an AABB and a line (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb2 a, Line2 b) => Distance(b, a);
+        public static double Distance(in Aabb2 a, in Line2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Line3 a, Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Line3 a, in Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Line2 a, Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Line2 a, in Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a line and an AABB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, Aabb3 b)
+        public static bool Overlaps(in Line3 a, in Aabb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an AABB and a line (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb3 a, Line3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb3 a, in Line3 b) => Overlaps(b, a);
         /// <summary>Whether a line and an AABB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, Aabb2 b)
+        public static bool Overlaps(in Line2 a, in Aabb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an AABB and a line (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb2 a, Line2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb2 a, in Line2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Line3 a, Aabb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Line3 a, in Aabb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Line2 a, Aabb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Line2 a, in Aabb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

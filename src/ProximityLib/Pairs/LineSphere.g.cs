@@ -10,78 +10,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a line and a sphere (3D): negative when the line enters the sphere (depth = radius − distance from the center to the line); PointB on the sphere along the normal from the line (a center on the line: PointB = center − <c>AnyPerpendicular</c>(direction)·radius); ParameterA is the line's t = Direction·(center − Origin). Algorithm: orthogonal projection of the center (residual formed from differences, Eberly), less the radius.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, Sphere b)
+        public static DistanceResult3 Between(in Line3 a, in Sphere b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a sphere and a line (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Line3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Sphere a, in Line3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a line and a circle (2D): negative when the line enters the circle (depth = radius − distance from the center to the line); PointB on the circle along the normal from the line (a center on the line: PointB = center − (y, −x)·radius for the direction (x, y)); ParameterA is the line's t = Direction·(center − Origin). Algorithm: orthogonal projection of the center (residual formed from differences, Eberly), less the radius.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, Circle b)
+        public static DistanceResult2 Between(in Line2 a, in Circle b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a circle and a line (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Line2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a line and a sphere (3D) without the witness points: the Distance of <see cref="Between(Line3, Sphere)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Circle a, in Line2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a line and a sphere (3D) without the witness points: the Distance of <see cref="Between(in Line3, in Sphere)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line3 a, Sphere b)
+        public static double Distance(in Line3 a, in Sphere b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a sphere and a line (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Sphere a, Line3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a line and a circle (2D) without the witness points: the Distance of <see cref="Between(Line2, Circle)"/>, bit for bit.</summary>
+        public static double Distance(in Sphere a, in Line3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a line and a circle (2D) without the witness points: the Distance of <see cref="Between(in Line2, in Circle)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line2 a, Circle b)
+        public static double Distance(in Line2 a, in Circle b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a circle and a line (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Circle a, Line2 b) => Distance(b, a);
+        public static double Distance(in Circle a, in Line2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Line3 a, Sphere b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Line3 a, in Sphere b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Line2 a, Circle b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Line2 a, in Circle b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a line and a sphere (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, Sphere b)
+        public static bool Overlaps(in Line3 a, in Sphere b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a sphere and a line (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Line3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Sphere a, in Line3 b) => Overlaps(b, a);
         /// <summary>Whether a line and a circle (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, Circle b)
+        public static bool Overlaps(in Line2 a, in Circle b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a circle and a line (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Line2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Circle a, in Line2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Line3 a, Sphere b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Line3 a, in Sphere b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Line2 a, Circle b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Line2 a, in Circle b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

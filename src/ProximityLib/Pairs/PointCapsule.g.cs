@@ -10,78 +10,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a point and a capsule (3D): negative inside (depth = radius − distance from the point to the axis); PointB lies on the surface along the axis normal through the point (a point on the axis: along <c>AnyPerpendicular</c> of the axis, +X for a zero-length axis); ParameterB is the axis parameter. Algorithm: point–segment distance to the axis less the radius (Eberly, robust point–segment; capsule = segment ⊕ ball).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Vector3D a, Capsule3 b)
+        public static DistanceResult3 Between(in Vector3D a, in Capsule3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a capsule and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Capsule3 a, Vector3D b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Capsule3 a, in Vector3D b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and a capsule (2D): negative inside (depth = radius − distance from the point to the axis); PointB lies on the boundary along the axis normal through the point (a point on the axis: along the axis's left-hand normal (y, −x), +X for a zero-length axis); ParameterB is the axis parameter. Algorithm: point–segment distance to the axis less the radius (Eberly, robust point–segment; capsule = segment ⊕ disc).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Vector2D a, Capsule2 b)
+        public static DistanceResult2 Between(in Vector2D a, in Capsule2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a capsule and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Capsule2 a, Vector2D b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a point and a capsule (3D) without the witness points: the Distance of <see cref="Between(Vector3D, Capsule3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Capsule2 a, in Vector2D b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a point and a capsule (3D) without the witness points: the Distance of <see cref="Between(in Vector3D, in Capsule3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector3D a, Capsule3 b)
+        public static double Distance(in Vector3D a, in Capsule3 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a capsule and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Capsule3 a, Vector3D b) => Distance(b, a);
-        /// <summary>Signed closest distance between a point and a capsule (2D) without the witness points: the Distance of <see cref="Between(Vector2D, Capsule2)"/>, bit for bit.</summary>
+        public static double Distance(in Capsule3 a, in Vector3D b) => Distance(b, a);
+        /// <summary>Signed closest distance between a point and a capsule (2D) without the witness points: the Distance of <see cref="Between(in Vector2D, in Capsule2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector2D a, Capsule2 b)
+        public static double Distance(in Vector2D a, in Capsule2 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a capsule and a point (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Capsule2 a, Vector2D b) => Distance(b, a);
+        public static double Distance(in Capsule2 a, in Vector2D b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Vector3D a, Capsule3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Vector3D a, in Capsule3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Vector2D a, Capsule2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Vector2D a, in Capsule2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and a capsule (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3D a, Capsule3 b)
+        public static bool Overlaps(in Vector3D a, in Capsule3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a capsule and a point (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule3 a, Vector3D b) => Overlaps(b, a);
+        public static bool Overlaps(in Capsule3 a, in Vector3D b) => Overlaps(b, a);
         /// <summary>Whether a point and a capsule (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2D a, Capsule2 b)
+        public static bool Overlaps(in Vector2D a, in Capsule2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a capsule and a point (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule2 a, Vector2D b) => Overlaps(b, a);
+        public static bool Overlaps(in Capsule2 a, in Vector2D b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Vector3D a, Capsule3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Vector3D a, in Capsule3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Vector2D a, Capsule2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Vector2D a, in Capsule2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -10,78 +10,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a point and an OBB (3D): negative inside (depth to the nearest face). Algorithm: clamp in the box frame (Ericson RTCD §5.1.4); nearest face when inside.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Vector3D a, Obb3 b)
+        public static DistanceResult3 Between(in Vector3D a, in Obb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an OBB and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Obb3 a, Vector3D b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Obb3 a, in Vector3D b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and an OBB (2D): negative inside (depth to the nearest face). Algorithm: clamp in the box frame (Ericson RTCD §5.1.4); nearest face when inside.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Vector2D a, Obb2 b)
+        public static DistanceResult2 Between(in Vector2D a, in Obb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an OBB and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Obb2 a, Vector2D b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a point and an OBB (3D) without the witness points: the Distance of <see cref="Between(Vector3D, Obb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Obb2 a, in Vector2D b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a point and an OBB (3D) without the witness points: the Distance of <see cref="Between(in Vector3D, in Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector3D a, Obb3 b)
+        public static double Distance(in Vector3D a, in Obb3 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between an OBB and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Obb3 a, Vector3D b) => Distance(b, a);
-        /// <summary>Signed closest distance between a point and an OBB (2D) without the witness points: the Distance of <see cref="Between(Vector2D, Obb2)"/>, bit for bit.</summary>
+        public static double Distance(in Obb3 a, in Vector3D b) => Distance(b, a);
+        /// <summary>Signed closest distance between a point and an OBB (2D) without the witness points: the Distance of <see cref="Between(in Vector2D, in Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector2D a, Obb2 b)
+        public static double Distance(in Vector2D a, in Obb2 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between an OBB and a point (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Obb2 a, Vector2D b) => Distance(b, a);
+        public static double Distance(in Obb2 a, in Vector2D b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Vector3D a, Obb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Vector3D a, in Obb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Vector2D a, Obb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Vector2D a, in Obb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and an OBB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3D a, Obb3 b)
+        public static bool Overlaps(in Vector3D a, in Obb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an OBB and a point (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb3 a, Vector3D b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb3 a, in Vector3D b) => Overlaps(b, a);
         /// <summary>Whether a point and an OBB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2D a, Obb2 b)
+        public static bool Overlaps(in Vector2D a, in Obb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an OBB and a point (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb2 a, Vector2D b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb2 a, in Vector2D b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Vector3D a, Obb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Vector3D a, in Obb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Vector2D a, Obb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Vector2D a, in Obb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -10,78 +10,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a point and a segment (3D): never negative; ParameterB is the clamped projection parameter. Algorithm: clamped projection with the residual formed from the nearer endpoint (robust form of paper Eq. 9–11; Eq. 10 cancels).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Vector3D a, Segment3 b)
+        public static DistanceResult3 Between(in Vector3D a, in Segment3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a segment and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Segment3 a, Vector3D b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Segment3 a, in Vector3D b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and a segment (2D): never negative; ParameterB is the clamped projection parameter. Algorithm: clamped projection with the residual formed from the nearer endpoint (robust form of paper Eq. 9–11; Eq. 10 cancels).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Vector2D a, Segment2 b)
+        public static DistanceResult2 Between(in Vector2D a, in Segment2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a segment and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, Vector2D b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a point and a segment (3D) without the witness points: the Distance of <see cref="Between(Vector3D, Segment3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Segment2 a, in Vector2D b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a point and a segment (3D) without the witness points: the Distance of <see cref="Between(in Vector3D, in Segment3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector3D a, Segment3 b)
+        public static double Distance(in Vector3D a, in Segment3 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a segment and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment3 a, Vector3D b) => Distance(b, a);
-        /// <summary>Signed closest distance between a point and a segment (2D) without the witness points: the Distance of <see cref="Between(Vector2D, Segment2)"/>, bit for bit.</summary>
+        public static double Distance(in Segment3 a, in Vector3D b) => Distance(b, a);
+        /// <summary>Signed closest distance between a point and a segment (2D) without the witness points: the Distance of <see cref="Between(in Vector2D, in Segment2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector2D a, Segment2 b)
+        public static double Distance(in Vector2D a, in Segment2 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a segment and a point (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment2 a, Vector2D b) => Distance(b, a);
+        public static double Distance(in Segment2 a, in Vector2D b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Vector3D a, Segment3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Vector3D a, in Segment3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Vector2D a, Segment2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Vector2D a, in Segment2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and a segment (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3D a, Segment3 b)
+        public static bool Overlaps(in Vector3D a, in Segment3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a segment and a point (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment3 a, Vector3D b) => Overlaps(b, a);
+        public static bool Overlaps(in Segment3 a, in Vector3D b) => Overlaps(b, a);
         /// <summary>Whether a point and a segment (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2D a, Segment2 b)
+        public static bool Overlaps(in Vector2D a, in Segment2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a segment and a point (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment2 a, Vector2D b) => Overlaps(b, a);
+        public static bool Overlaps(in Segment2 a, in Vector2D b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Vector3D a, Segment3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Vector3D a, in Segment3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Vector2D a, Segment2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Vector2D a, in Segment2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -10,78 +10,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a point and a sphere (3D): negative inside (depth = radius − |a − center|); a point at the center is pushed out along +X. Algorithm: |a − center| − radius (paper Eq. 12, 21).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Vector3D a, Sphere b)
+        public static DistanceResult3 Between(in Vector3D a, in Sphere b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a sphere and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Vector3D b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Sphere a, in Vector3D b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and a circle (2D): negative inside (depth = radius − |a − center|); a point at the center is pushed out along +X. Algorithm: |a − center| − radius (paper Eq. 12, 21).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Vector2D a, Circle b)
+        public static DistanceResult2 Between(in Vector2D a, in Circle b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a circle and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Vector2D b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a point and a sphere (3D) without the witness points: the Distance of <see cref="Between(Vector3D, Sphere)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Circle a, in Vector2D b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a point and a sphere (3D) without the witness points: the Distance of <see cref="Between(in Vector3D, in Sphere)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector3D a, Sphere b)
+        public static double Distance(in Vector3D a, in Sphere b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a sphere and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Sphere a, Vector3D b) => Distance(b, a);
-        /// <summary>Signed closest distance between a point and a circle (2D) without the witness points: the Distance of <see cref="Between(Vector2D, Circle)"/>, bit for bit.</summary>
+        public static double Distance(in Sphere a, in Vector3D b) => Distance(b, a);
+        /// <summary>Signed closest distance between a point and a circle (2D) without the witness points: the Distance of <see cref="Between(in Vector2D, in Circle)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector2D a, Circle b)
+        public static double Distance(in Vector2D a, in Circle b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a circle and a point (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Circle a, Vector2D b) => Distance(b, a);
+        public static double Distance(in Circle a, in Vector2D b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Vector3D a, Sphere b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Vector3D a, in Sphere b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Vector2D a, Circle b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Vector2D a, in Circle b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and a sphere (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3D a, Sphere b)
+        public static bool Overlaps(in Vector3D a, in Sphere b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a sphere and a point (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Vector3D b) => Overlaps(b, a);
+        public static bool Overlaps(in Sphere a, in Vector3D b) => Overlaps(b, a);
         /// <summary>Whether a point and a circle (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2D a, Circle b)
+        public static bool Overlaps(in Vector2D a, in Circle b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a circle and a point (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Vector2D b) => Overlaps(b, a);
+        public static bool Overlaps(in Circle a, in Vector2D b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Vector3D a, Sphere b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Vector3D a, in Sphere b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Vector2D a, Circle b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Vector2D a, in Circle b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

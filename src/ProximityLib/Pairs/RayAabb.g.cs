@@ -10,70 +10,70 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a ray and an AABB (3D): negative when the ray enters the box: minus the least translation that clears it, sideways (perpendicular to the ray) or back past the face it leaves through. Witnesses: ParameterA t ≥ 0 with PointA = Origin + t·Direction; where the closest points are not unique (the ray parallel to a face or an edge), the end of the stretch of closest points where the bracketing of the convex distance function first lands (a breakpoint where the ray crosses a slab plane of the box). Algorithm: in the box frame relative to its centre, the ray clipped to the box's projection onto it (widened, cut at 0) and minimised as a segment (convex piecewise quadratic); separating axes (Ericson RTCD §5.3.3): box normals and Direction × box axis.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Ray3 a, Aabb3 b)
+        public static DistanceResult3 Between(in Ray3 a, in Aabb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an AABB and a ray (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, Ray3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Aabb3 a, in Ray3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a ray and an AABB (2D): negative when the ray enters the box: minus the least translation that clears it, sideways (perpendicular to the ray) or back past the face it leaves through. Witnesses: ParameterA t ≥ 0 with PointA = Origin + t·Direction; where the closest points are not unique (the ray parallel to a face or an edge), the end of the stretch of closest points where the bracketing of the convex distance function first lands (a breakpoint where the ray crosses a slab plane of the box). Algorithm: in the box frame relative to its centre, the ray clipped to the box's projection onto it (widened, cut at 0) and minimised as a segment (convex piecewise quadratic); separating axes (Ericson RTCD §5.3.3): box normals and Direction × box axis.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Ray2 a, Aabb2 b)
+        public static DistanceResult2 Between(in Ray2 a, in Aabb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an AABB and a ray (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, Ray2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a ray and an AABB (3D) without the witness points: the Distance of <see cref="Between(Ray3, Aabb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Aabb2 a, in Ray2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a ray and an AABB (3D) without the witness points: the Distance of <see cref="Between(in Ray3, in Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Ray3 a, Aabb3 b) => Between(a, b).Distance;
+        public static double Distance(in Ray3 a, in Aabb3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an AABB and a ray (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb3 a, Ray3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a ray and an AABB (2D) without the witness points: the Distance of <see cref="Between(Ray2, Aabb2)"/>, bit for bit.</summary>
+        public static double Distance(in Aabb3 a, in Ray3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a ray and an AABB (2D) without the witness points: the Distance of <see cref="Between(in Ray2, in Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Ray2 a, Aabb2 b) => Between(a, b).Distance;
+        public static double Distance(in Ray2 a, in Aabb2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an AABB and a ray (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb2 a, Ray2 b) => Distance(b, a);
+        public static double Distance(in Aabb2 a, in Ray2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Ray3 a, Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Ray3 a, in Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Ray2 a, Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Ray2 a, in Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a ray and an AABB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray3 a, Aabb3 b)
+        public static bool Overlaps(in Ray3 a, in Aabb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an AABB and a ray (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb3 a, Ray3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb3 a, in Ray3 b) => Overlaps(b, a);
         /// <summary>Whether a ray and an AABB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray2 a, Aabb2 b)
+        public static bool Overlaps(in Ray2 a, in Aabb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an AABB and a ray (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb2 a, Ray2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb2 a, in Ray2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Ray3 a, Aabb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Ray3 a, in Aabb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Ray2 a, Aabb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Ray2 a, in Aabb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

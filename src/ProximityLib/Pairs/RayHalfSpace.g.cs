@@ -10,78 +10,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a ray and a half-space (3D): a ray heading inward (Normal·Direction &lt; 0, by its exact sign) penetrates without bound: Distance = −∞ (DistanceSquared 0) with both witnesses at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction, when it starts outside, or at the origin (t = 0) when it starts inside or on the boundary (also should the crossing lie beyond the double range). Otherwise (outward or parallel) the origin is lowest: the height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary. Algorithm: two dot products from the stored boundary point and one division.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Ray3 a, HalfSpace b)
+        public static DistanceResult3 Between(in Ray3 a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a half-space and a ray (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(HalfSpace a, Ray3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in HalfSpace a, in Ray3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a ray and a half-plane (2D): a ray heading inward (Normal·Direction &lt; 0, by its exact sign) penetrates without bound: Distance = −∞ (DistanceSquared 0) with both witnesses at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction, when it starts outside, or at the origin (t = 0) when it starts inside or on the boundary (also should the crossing lie beyond the double range). Otherwise (outward or parallel) the origin is lowest: the height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary. Algorithm: two dot products from the stored boundary point and one division.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Ray2 a, HalfPlane b)
+        public static DistanceResult2 Between(in Ray2 a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a half-plane and a ray (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Ray2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a ray and a half-space (3D) without the witness points: the Distance of <see cref="Between(Ray3, HalfSpace)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in HalfPlane a, in Ray2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a ray and a half-space (3D) without the witness points: the Distance of <see cref="Between(in Ray3, in HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Ray3 a, HalfSpace b)
+        public static double Distance(in Ray3 a, in HalfSpace b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a half-space and a ray (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfSpace a, Ray3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a ray and a half-plane (2D) without the witness points: the Distance of <see cref="Between(Ray2, HalfPlane)"/>, bit for bit.</summary>
+        public static double Distance(in HalfSpace a, in Ray3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a ray and a half-plane (2D) without the witness points: the Distance of <see cref="Between(in Ray2, in HalfPlane)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Ray2 a, HalfPlane b)
+        public static double Distance(in Ray2 a, in HalfPlane b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a half-plane and a ray (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfPlane a, Ray2 b) => Distance(b, a);
+        public static double Distance(in HalfPlane a, in Ray2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Ray3 a, HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Ray3 a, in HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Ray2 a, HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Ray2 a, in HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a ray and a half-space (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray3 a, HalfSpace b)
+        public static bool Overlaps(in Ray3 a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a half-space and a ray (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, Ray3 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfSpace a, in Ray3 b) => Overlaps(b, a);
         /// <summary>Whether a ray and a half-plane (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray2 a, HalfPlane b)
+        public static bool Overlaps(in Ray2 a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a half-plane and a ray (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, Ray2 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfPlane a, in Ray2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Ray3 a, HalfSpace b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Ray3 a, in HalfSpace b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Ray2 a, HalfPlane b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Ray2 a, in HalfPlane b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -10,70 +10,70 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a segment and an AABB (3D): negative when the segment enters the box (minimum translation over the separating-axis candidates). Algorithm: convex piecewise-quadratic minimisation along the segment in the box frame; SAT for overlap (Ericson RTCD §5.3.3).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Segment3 a, Aabb3 b)
+        public static DistanceResult3 Between(in Segment3 a, in Aabb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an AABB and a segment (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, Segment3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Aabb3 a, in Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and an AABB (2D): negative when the segment enters the box (minimum translation over the separating-axis candidates). Algorithm: convex piecewise-quadratic minimisation along the segment in the box frame; SAT for overlap (Ericson RTCD §5.3.3).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, Aabb2 b)
+        public static DistanceResult2 Between(in Segment2 a, in Aabb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an AABB and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, Segment2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a segment and an AABB (3D) without the witness points: the Distance of <see cref="Between(Segment3, Aabb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Aabb2 a, in Segment2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a segment and an AABB (3D) without the witness points: the Distance of <see cref="Between(in Segment3, in Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment3 a, Aabb3 b) => Between(a, b).Distance;
+        public static double Distance(in Segment3 a, in Aabb3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an AABB and a segment (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb3 a, Segment3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a segment and an AABB (2D) without the witness points: the Distance of <see cref="Between(Segment2, Aabb2)"/>, bit for bit.</summary>
+        public static double Distance(in Aabb3 a, in Segment3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a segment and an AABB (2D) without the witness points: the Distance of <see cref="Between(in Segment2, in Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment2 a, Aabb2 b) => Between(a, b).Distance;
+        public static double Distance(in Segment2 a, in Aabb2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an AABB and a segment (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb2 a, Segment2 b) => Distance(b, a);
+        public static double Distance(in Aabb2 a, in Segment2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Segment3 a, Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Segment3 a, in Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Segment2 a, Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Segment2 a, in Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and an AABB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment3 a, Aabb3 b)
+        public static bool Overlaps(in Segment3 a, in Aabb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an AABB and a segment (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb3 a, Segment3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb3 a, in Segment3 b) => Overlaps(b, a);
         /// <summary>Whether a segment and an AABB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment2 a, Aabb2 b)
+        public static bool Overlaps(in Segment2 a, in Aabb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an AABB and a segment (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb2 a, Segment2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb2 a, in Segment2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Segment3 a, Aabb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Segment3 a, in Aabb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Segment2 a, Aabb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Segment2 a, in Aabb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -10,70 +10,70 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a segment and a capsule (3D): negative when the segment enters the capsule; 3D: distance of the axes less the radius (the axes' Minkowski difference is flat); witnesses pushed along the unit residual, or for meeting axes along the common normal A.dir × axis (parallel: <c>AnyPerpendicular</c> of A's direction); ParameterB is the axis parameter. Algorithm: robust segment–segment distance of segment and axis (Eberly; Lagrange-identity determinant) less the radius (capsule = segment ⊕ ball).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Segment3 a, Capsule3 b)
+        public static DistanceResult3 Between(in Segment3 a, in Capsule3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a capsule and a segment (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Capsule3 a, Segment3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Capsule3 a, in Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and a capsule (2D): negative when the segment enters the capsule; 2D: separated axes give their distance less the radius; crossing axes give −(radius + the crossing depth of the axes, the smallest push of one axis off the other along a face normal of their Minkowski difference), the witnesses an endpoint and its image across that face, pushed by the radius; ParameterB is the axis parameter. Algorithm: robust segment–segment distance of segment and axis (Eberly) less the radius; crossing depth by the separating-axis test over the axes' normals and directions (Gottschalk).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, Capsule2 b)
+        public static DistanceResult2 Between(in Segment2 a, in Capsule2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a capsule and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Capsule2 a, Segment2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a segment and a capsule (3D) without the witness points: the Distance of <see cref="Between(Segment3, Capsule3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Capsule2 a, in Segment2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a segment and a capsule (3D) without the witness points: the Distance of <see cref="Between(in Segment3, in Capsule3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment3 a, Capsule3 b) => Between(a, b).Distance;
+        public static double Distance(in Segment3 a, in Capsule3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a capsule and a segment (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Capsule3 a, Segment3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a segment and a capsule (2D) without the witness points: the Distance of <see cref="Between(Segment2, Capsule2)"/>, bit for bit.</summary>
+        public static double Distance(in Capsule3 a, in Segment3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a segment and a capsule (2D) without the witness points: the Distance of <see cref="Between(in Segment2, in Capsule2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment2 a, Capsule2 b) => Between(a, b).Distance;
+        public static double Distance(in Segment2 a, in Capsule2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a capsule and a segment (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Capsule2 a, Segment2 b) => Distance(b, a);
+        public static double Distance(in Capsule2 a, in Segment2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Segment3 a, Capsule3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Segment3 a, in Capsule3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Segment2 a, Capsule2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Segment2 a, in Capsule2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and a capsule (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment3 a, Capsule3 b)
+        public static bool Overlaps(in Segment3 a, in Capsule3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a capsule and a segment (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule3 a, Segment3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Capsule3 a, in Segment3 b) => Overlaps(b, a);
         /// <summary>Whether a segment and a capsule (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment2 a, Capsule2 b)
+        public static bool Overlaps(in Segment2 a, in Capsule2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a capsule and a segment (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule2 a, Segment2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Capsule2 a, in Segment2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Segment3 a, Capsule3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Segment3 a, in Capsule3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Segment2 a, Capsule2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Segment2 a, in Capsule2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

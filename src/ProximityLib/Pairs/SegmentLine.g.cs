@@ -10,70 +10,70 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a segment and a line (3D): never negative; for a segment parallel to the line the closest pair at the segment's start (the segment kernel's first endpoint minimum on the cut line); ParameterA is the segment parameter, ParameterB the line's t. Algorithm: the line cut to the stretch between the projections of the segment's endpoints (it holds a closest point), then the robust segment–segment kernel (Eberly; Lagrange-identity determinant) in the frame of the line's origin.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Segment3 a, Line3 b)
+        public static DistanceResult3 Between(in Segment3 a, in Line3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a line and a segment (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, Segment3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Line3 a, in Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and a line (2D): never negative (0 where the segment crosses the line); for a segment parallel to the line the closest pair at the segment's start; ParameterA is the segment parameter, ParameterB the line's t. Algorithm: the line cut to the stretch between the projections of the segment's endpoints (it holds a closest point), then the robust segment–segment kernel (Eberly; Lagrange-identity determinant) in the frame of the line's origin.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, Line2 b)
+        public static DistanceResult2 Between(in Segment2 a, in Line2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a line and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, Segment2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a segment and a line (3D) without the witness points: the Distance of <see cref="Between(Segment3, Line3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Line2 a, in Segment2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a segment and a line (3D) without the witness points: the Distance of <see cref="Between(in Segment3, in Line3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment3 a, Line3 b) => Between(a, b).Distance;
+        public static double Distance(in Segment3 a, in Line3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a line and a segment (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line3 a, Segment3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a segment and a line (2D) without the witness points: the Distance of <see cref="Between(Segment2, Line2)"/>, bit for bit.</summary>
+        public static double Distance(in Line3 a, in Segment3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a segment and a line (2D) without the witness points: the Distance of <see cref="Between(in Segment2, in Line2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment2 a, Line2 b) => Between(a, b).Distance;
+        public static double Distance(in Segment2 a, in Line2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a line and a segment (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line2 a, Segment2 b) => Distance(b, a);
+        public static double Distance(in Line2 a, in Segment2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Segment3 a, Line3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Segment3 a, in Line3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Segment2 a, Line2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Segment2 a, in Line2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and a line (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment3 a, Line3 b)
+        public static bool Overlaps(in Segment3 a, in Line3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a line and a segment (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, Segment3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Line3 a, in Segment3 b) => Overlaps(b, a);
         /// <summary>Whether a segment and a line (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment2 a, Line2 b)
+        public static bool Overlaps(in Segment2 a, in Line2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a line and a segment (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, Segment2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Line2 a, in Segment2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Segment3 a, Line3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Segment3 a, in Line3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Segment2 a, Line2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Segment2 a, in Line2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

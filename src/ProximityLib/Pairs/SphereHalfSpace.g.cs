@@ -10,78 +10,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a sphere and a half-space (3D): the center's height Normal·(center − Point) less the radius, negative when overlapping; witnesses the sphere's lowest point center − Normal·radius and the center's foot on the boundary. Algorithm: one dot product from the stored boundary point (Ericson RTCD §5.2.2).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, HalfSpace b)
+        public static DistanceResult3 Between(in Sphere a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a half-space and a sphere (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(HalfSpace a, Sphere b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in HalfSpace a, in Sphere b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a circle and a half-plane (2D): the center's height Normal·(center − Point) less the radius, negative when overlapping; witnesses the circle's lowest point center − Normal·radius and the center's foot on the boundary. Algorithm: one dot product from the stored boundary point (Ericson RTCD §5.2.2).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, HalfPlane b)
+        public static DistanceResult2 Between(in Circle a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a half-plane and a circle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Circle b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a sphere and a half-space (3D) without the witness points: the Distance of <see cref="Between(Sphere, HalfSpace)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in HalfPlane a, in Circle b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a sphere and a half-space (3D) without the witness points: the Distance of <see cref="Between(in Sphere, in HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Sphere a, HalfSpace b)
+        public static double Distance(in Sphere a, in HalfSpace b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a half-space and a sphere (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfSpace a, Sphere b) => Distance(b, a);
-        /// <summary>Signed closest distance between a circle and a half-plane (2D) without the witness points: the Distance of <see cref="Between(Circle, HalfPlane)"/>, bit for bit.</summary>
+        public static double Distance(in HalfSpace a, in Sphere b) => Distance(b, a);
+        /// <summary>Signed closest distance between a circle and a half-plane (2D) without the witness points: the Distance of <see cref="Between(in Circle, in HalfPlane)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Circle a, HalfPlane b)
+        public static double Distance(in Circle a, in HalfPlane b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a half-plane and a circle (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfPlane a, Circle b) => Distance(b, a);
+        public static double Distance(in HalfPlane a, in Circle b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Sphere a, HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Sphere a, in HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Circle a, HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Circle a, in HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and a half-space (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, HalfSpace b)
+        public static bool Overlaps(in Sphere a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a half-space and a sphere (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, Sphere b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfSpace a, in Sphere b) => Overlaps(b, a);
         /// <summary>Whether a circle and a half-plane (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, HalfPlane b)
+        public static bool Overlaps(in Circle a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a half-plane and a circle (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, Circle b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfPlane a, in Circle b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Sphere a, HalfSpace b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Sphere a, in HalfSpace b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Circle a, HalfPlane b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Circle a, in HalfPlane b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -10,78 +10,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a sphere and an OBB (3D): negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside). Algorithm: point–box from the center in the box frame, less the radius; overlap by Arvo's squared test.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Obb3 b)
+        public static DistanceResult3 Between(in Sphere a, in Obb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an OBB and a sphere (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Obb3 a, Sphere b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Obb3 a, in Sphere b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a circle and an OBB (2D): negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside). Algorithm: point–box from the center in the box frame, less the radius; overlap by Arvo's squared test.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Obb2 b)
+        public static DistanceResult2 Between(in Circle a, in Obb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an OBB and a circle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Obb2 a, Circle b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a sphere and an OBB (3D) without the witness points: the Distance of <see cref="Between(Sphere, Obb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Obb2 a, in Circle b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a sphere and an OBB (3D) without the witness points: the Distance of <see cref="Between(in Sphere, in Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Sphere a, Obb3 b)
+        public static double Distance(in Sphere a, in Obb3 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between an OBB and a sphere (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Obb3 a, Sphere b) => Distance(b, a);
-        /// <summary>Signed closest distance between a circle and an OBB (2D) without the witness points: the Distance of <see cref="Between(Circle, Obb2)"/>, bit for bit.</summary>
+        public static double Distance(in Obb3 a, in Sphere b) => Distance(b, a);
+        /// <summary>Signed closest distance between a circle and an OBB (2D) without the witness points: the Distance of <see cref="Between(in Circle, in Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Circle a, Obb2 b)
+        public static double Distance(in Circle a, in Obb2 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between an OBB and a circle (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Obb2 a, Circle b) => Distance(b, a);
+        public static double Distance(in Obb2 a, in Circle b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Sphere a, Obb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Sphere a, in Obb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Circle a, Obb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Circle a, in Obb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and an OBB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Obb3 b)
+        public static bool Overlaps(in Sphere a, in Obb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an OBB and a sphere (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb3 a, Sphere b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb3 a, in Sphere b) => Overlaps(b, a);
         /// <summary>Whether a circle and an OBB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Obb2 b)
+        public static bool Overlaps(in Circle a, in Obb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an OBB and a circle (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb2 a, Circle b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb2 a, in Circle b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Sphere a, Obb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Sphere a, in Obb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Circle a, Obb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Circle a, in Obb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -10,78 +10,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a triangle and a half-space (3D): the lowest vertex's height Normal·(vertex − Point), negative when the triangle enters (minus the depth of its deepest vertex); witnesses that vertex and its foot on the boundary, the first of A, B, C among equally low ones (an edge or the whole triangle parallel to the boundary). Algorithm: the height is linear over the triangle, so a vertex is lowest (solid or not); three dot products from the stored boundary point.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Triangle3 a, HalfSpace b)
+        public static DistanceResult3 Between(in Triangle3 a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a half-space and a triangle (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(HalfSpace a, Triangle3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in HalfSpace a, in Triangle3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a triangle and a half-plane (2D): the lowest vertex's height Normal·(vertex − Point), negative when the triangle enters (minus the depth of its deepest vertex); witnesses that vertex and its foot on the boundary, the first of A, B, C among equally low ones (an edge or the whole triangle parallel to the boundary). Algorithm: the height is linear over the triangle, so a vertex is lowest (solid or not); three dot products from the stored boundary point.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Triangle2 a, HalfPlane b)
+        public static DistanceResult2 Between(in Triangle2 a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a half-plane and a triangle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Triangle2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a triangle and a half-space (3D) without the witness points: the Distance of <see cref="Between(Triangle3, HalfSpace)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in HalfPlane a, in Triangle2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a triangle and a half-space (3D) without the witness points: the Distance of <see cref="Between(in Triangle3, in HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Triangle3 a, HalfSpace b)
+        public static double Distance(in Triangle3 a, in HalfSpace b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a half-space and a triangle (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfSpace a, Triangle3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a triangle and a half-plane (2D) without the witness points: the Distance of <see cref="Between(Triangle2, HalfPlane)"/>, bit for bit.</summary>
+        public static double Distance(in HalfSpace a, in Triangle3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a triangle and a half-plane (2D) without the witness points: the Distance of <see cref="Between(in Triangle2, in HalfPlane)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Triangle2 a, HalfPlane b)
+        public static double Distance(in Triangle2 a, in HalfPlane b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a half-plane and a triangle (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfPlane a, Triangle2 b) => Distance(b, a);
+        public static double Distance(in HalfPlane a, in Triangle2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Triangle3 a, HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Triangle3 a, in HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Triangle2 a, HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Triangle2 a, in HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a triangle and a half-space (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle3 a, HalfSpace b)
+        public static bool Overlaps(in Triangle3 a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a half-space and a triangle (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, Triangle3 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfSpace a, in Triangle3 b) => Overlaps(b, a);
         /// <summary>Whether a triangle and a half-plane (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle2 a, HalfPlane b)
+        public static bool Overlaps(in Triangle2 a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a half-plane and a triangle (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, Triangle2 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfPlane a, in Triangle2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Triangle3 a, HalfSpace b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Triangle3 a, in HalfSpace b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Triangle2 a, HalfPlane b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Triangle2 a, in HalfPlane b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

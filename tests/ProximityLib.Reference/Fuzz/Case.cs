@@ -131,7 +131,7 @@ namespace ProximityReference.Fuzz
 
         /// <summary>The public overloads of a query method (Between, Distance, Overlaps) for the pair, both orders.</summary>
         public static bool Exists(Type owner, string method, Type a, Type b) =>
-            owner.GetMethod(method, new[] { a, b }) != null || owner.GetMethod(method, new[] { b, a }) != null;
+            Api.Find(owner, method, a, b) != null || Api.Find(owner, method, b, a) != null;
 
         /// <summary>The library type of a kind in a dimension and precision.</summary>
         public static Type ShapeType(int dim, Kind kind, bool isFloat)

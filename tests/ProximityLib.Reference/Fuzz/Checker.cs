@@ -106,17 +106,12 @@ namespace ProximityReference.Fuzz
 
         // ---- calls -------------------------------------------------------------------------------------------------
 
-        private Res Between(object a, object b) => Res.From(_float
-            ? (object)ProximityLib.ClosestDistance.Between((dynamic)a, (dynamic)b)
-            : (object)Dbl.ClosestDistance.Between((dynamic)a, (dynamic)b));
+        // The precision follows the shapes' types (Api picks the double or the float overload).
+        private static Res Between(object a, object b) => Res.From(Api.Between(a, b));
 
-        private bool Overlaps(object a, object b) => _float
-            ? (bool)ProximityLib.ProximityQuery.Overlaps((dynamic)a, (dynamic)b)
-            : (bool)Dbl.ProximityQuery.Overlaps((dynamic)a, (dynamic)b);
+        private static bool Overlaps(object a, object b) => Api.Overlaps(a, b);
 
-        private double Distance(object a, object b) => _float
-            ? (double)(float)ProximityLib.ClosestDistance.Distance((dynamic)a, (dynamic)b)
-            : (double)Dbl.ClosestDistance.Distance((dynamic)a, (dynamic)b);
+        private static double Distance(object a, object b) => Api.Distance(a, b);
 
         private string N(double x) => Res.N(x, _float);
         private string Show(Res r) => r.Show(_float, _c.Dim);

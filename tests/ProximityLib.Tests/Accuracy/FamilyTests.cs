@@ -41,16 +41,16 @@ namespace ProximityTests.Accuracy
             {
                 var a = Shapes.Scaled(c.A, 1);
                 var b = Shapes.Scaled(c.B, 1);
-                double d = ClosestDistance.Between((dynamic)a, (dynamic)b).Distance;
-                bool o = ProximityQuery.Overlaps((dynamic)a, (dynamic)b);
+                double d = Api.BetweenDistance(a, b);
+                bool o = Api.Overlaps(a, b);
                 // Inside the documented safe range (2^±480) for the range-limits family, wider elsewhere.
                 foreach (int k in family == "range-limits" ? new[] { -8, 8 } : new[] { -200, -9, 5, 200 })
                 {
                     double s = Math.Pow(2, k);
                     var sa = Shapes.Scaled(c.A, s);
                     var sb = Shapes.Scaled(c.B, s);
-                    Assert.That((double)ClosestDistance.Between((dynamic)sa, (dynamic)sb).Distance, Is.EqualTo(d * s), $"2^{k}: {c}");
-                    Assert.That((bool)ProximityQuery.Overlaps((dynamic)sa, (dynamic)sb), Is.EqualTo(o), $"2^{k}: {c}");
+                    Assert.That(Api.BetweenDistance(sa, sb), Is.EqualTo(d * s), $"2^{k}: {c}");
+                    Assert.That(Api.Overlaps(sa, sb), Is.EqualTo(o), $"2^{k}: {c}");
                 }
             }
         }

@@ -43,7 +43,7 @@ namespace ProximityTests.Batch
             {
                 var wa = ProximityReference.Shapes.Widen(a[i]);
                 var wb = ProximityReference.Shapes.Widen(b[i]);
-                double scalar = D.ClosestDistance.Between((dynamic)wa, (dynamic)wb).Distance;
+                double scalar = Api.Between(wa, wb).Distance;
                 double scale = Exact.Scale(RShape.FromAny(wa), RShape.FromAny(wb));
                 Assert.That(Math.Abs(batch[i] - scalar), Is.LessThanOrEqualTo(Bound * UFloat * scale), $"lane {i}: batch {batch[i]:R}, scalar {scalar:R}");
             }
@@ -56,7 +56,7 @@ namespace ProximityTests.Batch
             {
                 var wa = ProximityReference.Shapes.Widen(a[i]);
                 var wb = ProximityReference.Shapes.Widen(b[i]);
-                double d = D.ClosestDistance.Between((dynamic)wa, (dynamic)wb).Distance;
+                double d = Api.Between(wa, wb).Distance;
                 double scale = Exact.Scale(RShape.FromAny(wa), RShape.FromAny(wb));
                 if (Math.Abs(d) <= 32 * UFloat * scale) continue;
                 decided++;

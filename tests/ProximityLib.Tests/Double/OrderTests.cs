@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using NUnit.Framework;
 using ProximityLib.Double;
 using static ProximityTests.Support.Expect;
+using Api = ProximityReference.Api;
 
 namespace ProximityTests.Double
 {
@@ -52,7 +53,7 @@ namespace ProximityTests.Double
         {
             foreach (var s in new object[] { new Segment3(V(0, 1, 2), V(3, -1, 0.5)), new Segment2(V(0, 1), V(3, -1)), V(1, 2, 3), V(1, 2) })
             {
-                dynamic r = ClosestDistance.Between((dynamic)s, (dynamic)s);
+                dynamic r = Api.Between(s, s);
                 Assert.That((object)r.PointA, Is.EqualTo((object)r.PointB), s.ToString());
                 Assert.That((double)r.ParameterA, Is.EqualTo((double)r.ParameterB), s.ToString());
                 Assert.That((double)r.Distance, Is.EqualTo(0), s.ToString());
@@ -105,23 +106,23 @@ namespace ProximityTests.Double
         private static void AssertSymmetric(object a, object b)
         {
             string what = $"{Describe(a)} vs {Describe(b)}";
-            dynamic ab = ClosestDistance.Between((dynamic)a, (dynamic)b), ba = ClosestDistance.Between((dynamic)b, (dynamic)a);
+            dynamic ab = Api.Between(a, b), ba = Api.Between(b, a);
             Assert.That(Bits(ab.Distance), Is.EqualTo(Bits(ba.Distance)), "Distance, " + what);
             Assert.That(Bits(ab.DistanceSquared), Is.EqualTo(Bits(ba.DistanceSquared)), "DistanceSquared, " + what);
             Assert.That(Bits(ab.PointA), Is.EqualTo(Bits(ba.PointB)), "PointA, " + what);
             Assert.That(Bits(ab.PointB), Is.EqualTo(Bits(ba.PointA)), "PointB, " + what);
             Assert.That(Bits(ab.ParameterA), Is.EqualTo(Bits(ba.ParameterB)), "ParameterA, " + what);
             Assert.That(Bits(ab.ParameterB), Is.EqualTo(Bits(ba.ParameterA)), "ParameterB, " + what);
-            Assert.That((bool)ProximityQuery.Overlaps((dynamic)b, (dynamic)a), Is.EqualTo((bool)ProximityQuery.Overlaps((dynamic)a, (dynamic)b)), "Overlaps, " + what);
+            Assert.That((bool)Api.Overlaps(b, a), Is.EqualTo((bool)Api.Overlaps(a, b)), "Overlaps, " + what);
 
             var fa = ToFloat(a);
             var fb = ToFloat(b);
             if (fa == null || fb == null) return;
-            dynamic fab = ProximityLib.ClosestDistance.Between((dynamic)fa, (dynamic)fb), fba = ProximityLib.ClosestDistance.Between((dynamic)fb, (dynamic)fa);
+            dynamic fab = Api.Between(fa, fb), fba = Api.Between(fb, fa);
             Assert.That(Bits((double)fab.Distance), Is.EqualTo(Bits((double)fba.Distance)), "float Distance, " + what);
             Assert.That(fab.PointA.ToString(), Is.EqualTo(fba.PointB.ToString()), "float PointA, " + what);
             Assert.That(fab.PointB.ToString(), Is.EqualTo(fba.PointA.ToString()), "float PointB, " + what);
-            Assert.That((bool)ProximityLib.ProximityQuery.Overlaps((dynamic)fb, (dynamic)fa), Is.EqualTo((bool)ProximityLib.ProximityQuery.Overlaps((dynamic)fa, (dynamic)fb)), "float Overlaps, " + what);
+            Assert.That((bool)Api.Overlaps(fb, fa), Is.EqualTo((bool)Api.Overlaps(fa, fb)), "float Overlaps, " + what);
         }
 
         /// <summary>The float shape with the same values, when every value is a float (grid inputs are).</summary>

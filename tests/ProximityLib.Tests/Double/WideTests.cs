@@ -4,6 +4,7 @@ using NUnit.Framework;
 using ProximityLib.Double;
 using ProximityTests.Support;
 using static ProximityTests.Support.Expect;
+using Api = ProximityReference.Api;
 
 namespace ProximityTests.Double
 {
@@ -160,21 +161,21 @@ namespace ProximityTests.Double
                     {
                         var (a, scaleA) = Shape(rng, kindA, dim, 1, 0);
                         var (b, scaleB) = Shape(rng, kindB, dim, 1, (rng.NextDouble() - 0.5) * 4);
-                        dynamic r = ClosestDistance.Between((dynamic)a, (dynamic)b);
-                        bool o = ProximityQuery.Overlaps((dynamic)a, (dynamic)b);
+                        dynamic r = Api.Between(a, b);
+                        bool o = Api.Overlaps(a, b);
                         foreach (int k in new[] { -900, -600, -300, 300, 600, 900 })
                         {
                             double f = Math.Pow(2, k);
                             var sa = scaleA(f);
                             var sb = scaleB(f);
-                            dynamic s = ClosestDistance.Between((dynamic)sa, (dynamic)sb);
+                            dynamic s = Api.Between(sa, sb);
                             string what = $"2^{k}: {Describe(a)} vs {Describe(b)}";
                             Assert.That((double)s.Distance, Is.EqualTo((double)r.Distance * f), what);
                             Assert.That((object)s.PointA, Is.EqualTo((object)(r.PointA * f)), what);
                             Assert.That((object)s.PointB, Is.EqualTo((object)(r.PointB * f)), what);
                             Assert.That((double)s.ParameterA, Is.EqualTo((double)r.ParameterA), what);
                             Assert.That((double)s.ParameterB, Is.EqualTo((double)r.ParameterB), what);
-                            Assert.That((bool)ProximityQuery.Overlaps((dynamic)sa, (dynamic)sb), Is.EqualTo(o), what);
+                            Assert.That((bool)Api.Overlaps(sa, sb), Is.EqualTo(o), what);
                         }
                     }
         }
@@ -184,14 +185,14 @@ namespace ProximityTests.Double
         private static void CheckPair(object a, object b)
         {
             string what = $"{Describe(a)} vs {Describe(b)}";
-            dynamic r = ClosestDistance.Between((dynamic)a, (dynamic)b);
+            dynamic r = Api.Between(a, b);
             double d = r.Distance;
             Assert.That(double.IsNaN(d), Is.False, what);
             Assert.That(IsFinite(r.PointA) && IsFinite(r.PointB), Is.True, $"witnesses {r.PointA} {r.PointB}, {what}");
             double e = Exactly.Error(a, b, d), exact = Exactly.Distance(a, b), scale = Exactly.Scale(a, b);
             Assert.That(e, Is.LessThanOrEqualTo(Bound(a, b)), $"E, exact {exact:R}, got {d:R}, {what}");
             if (Math.Abs(exact) > 32 * Exactly.U * scale)
-                Assert.That((bool)ProximityQuery.Overlaps((dynamic)a, (dynamic)b), Is.EqualTo(exact <= 0), $"verdict, exact {exact:R}, {what}");
+                Assert.That((bool)Api.Overlaps(a, b), Is.EqualTo(exact <= 0), $"verdict, exact {exact:R}, {what}");
         }
 
         private static bool IsFinite(Vector3D v) => v.IsFinite;

@@ -17,7 +17,7 @@ namespace ProximityTests.Pairs
         public const double U = 1.1102230246251565e-16; // 2^-53
 
         public static (dynamic r, bool overlaps) Query(object a, object b) =>
-            (ClosestDistance.Between((dynamic)a, (dynamic)b), (bool)ProximityQuery.Overlaps((dynamic)a, (dynamic)b));
+            (Api.Between(a, b), (bool)Api.Overlaps(a, b));
 
         private static bool Scales(object shape) => shape is Line3 || shape is Line2 || shape is Ray3 || shape is Ray2;
 
@@ -29,8 +29,8 @@ namespace ProximityTests.Pairs
         public static (double D, Vector3D PA, Vector3D PB, double TA, double TB) Check(Func<double, (object a, object b)> make, double witnessTol = 1e-9)
         {
             var (a, b) = make(1);
-            var r = ClosestDistance.Between((dynamic)a, (dynamic)b);
-            var s = ClosestDistance.Between((dynamic)b, (dynamic)a);
+            var r = Api.Between(a, b);
+            var s = Api.Between(b, a);
             double d = r.Distance;
             Vector3D pa = P3(r.PointA), pb = P3(r.PointB);
             string what = $"{a} / {b}: D={d:R} PA={pa} PB={pb}";
@@ -39,10 +39,10 @@ namespace ProximityTests.Pairs
             Assert.That(Bits(s.DistanceSquared), Is.EqualTo(Bits(r.DistanceSquared)), "swap " + what);
             Assert.That(P3(s.PointA) == pb && P3(s.PointB) == pa, Is.True, "swap witnesses " + what);
             Assert.That(s.ParameterA == r.ParameterB && s.ParameterB == r.ParameterA, Is.True, "swap parameters " + what);
-            Assert.That(Bits(ClosestDistance.Distance((dynamic)a, (dynamic)b)), Is.EqualTo(Bits(d)), "Distance " + what);
-            Assert.That(Bits(ClosestDistance.Distance((dynamic)b, (dynamic)a)), Is.EqualTo(Bits(d)), "Distance swapped " + what);
-            bool ov = ProximityQuery.Overlaps((dynamic)a, (dynamic)b);
-            Assert.That((bool)ProximityQuery.Overlaps((dynamic)b, (dynamic)a), Is.EqualTo(ov), "Overlaps swapped " + what);
+            Assert.That(Bits(Api.Distance(a, b)), Is.EqualTo(Bits(d)), "Distance " + what);
+            Assert.That(Bits(Api.Distance(b, a)), Is.EqualTo(Bits(d)), "Distance swapped " + what);
+            bool ov = Api.Overlaps(a, b);
+            Assert.That((bool)Api.Overlaps(b, a), Is.EqualTo(ov), "Overlaps swapped " + what);
             if (Math.Abs(d) > 1e-300) Assert.That(ov, Is.EqualTo(d <= 0), "Overlaps vs Distance " + what);
             Assert.That(Finite(pa) && Finite(pb), Is.True, "finite witnesses " + what);
             double scale = Math.Max(1, Math.Max(Range(pa), Range(pb)));
@@ -62,15 +62,15 @@ namespace ProximityTests.Pairs
             {
                 double f = Math.Pow(2, k);
                 var (ka, kb) = make(f);
-                var q = ClosestDistance.Between((dynamic)ka, (dynamic)kb);
+                var q = Api.Between(ka, kb);
                 string w = $"2^{k}: {what} got D={q.Distance:R} PA={P3(q.PointA)} PB={P3(q.PointB)}";
                 Assert.That(Bits(q.Distance), Is.EqualTo(Bits(d * f)), w);
                 Assert.That(P3(q.PointA) == pa * f && P3(q.PointB) == pb * f, Is.True, w);
                 Assert.That(q.ParameterA, Is.EqualTo(Scales(a) ? r.ParameterA * f : r.ParameterA), w);
                 Assert.That(q.ParameterB, Is.EqualTo(Scales(b) ? r.ParameterB * f : r.ParameterB), w);
                 if (Math.Abs(k) < 100) Assert.That(q.DistanceSquared, Is.EqualTo(r.DistanceSquared * f * f), w);
-                Assert.That((bool)ProximityQuery.Overlaps((dynamic)ka, (dynamic)kb), Is.EqualTo(ov), w);
-                Assert.That(Bits(ClosestDistance.Distance((dynamic)ka, (dynamic)kb)), Is.EqualTo(Bits(d * f)), w);
+                Assert.That((bool)Api.Overlaps(ka, kb), Is.EqualTo(ov), w);
+                Assert.That(Bits(Api.Distance(ka, kb)), Is.EqualTo(Bits(d * f)), w);
             }
             return (d, pa, pb, r.ParameterA, r.ParameterB);
         }

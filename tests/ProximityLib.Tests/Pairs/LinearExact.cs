@@ -152,17 +152,17 @@ namespace ProximityTests.Pairs
         public static double Check(object a, object b, double bound = 32)
         {
             dynamic da = a, db = b;
-            var r = ClosestDistance.Between(da, db);
+            var r = Api.Between(da, db);
             double d = r.Distance;
             string at = $"{a} vs {b}: D={d:R} exact {Exact(a, b):R}";
             double e = Error(a, b, d);
             Assert.That(e, Is.LessThanOrEqualTo(bound), at);
-            Assert.That(BitConverter.DoubleToInt64Bits((double)ClosestDistance.Distance(da, db)), Is.EqualTo(BitConverter.DoubleToInt64Bits(d)), "Distance, " + at);
-            var q = ClosestDistance.Between(db, da);
+            Assert.That(BitConverter.DoubleToInt64Bits((double)Api.Distance(da, db)), Is.EqualTo(BitConverter.DoubleToInt64Bits(d)), "Distance, " + at);
+            var q = Api.Between(db, da);
             Assert.That(q.Equals(r.Swapped()), Is.True, $"swap: {q} vs {r}, " + at);
             double s = Scale(Of(a), Of(b));
-            bool o = ProximityQuery.Overlaps(da, db);
-            Assert.That((bool)ProximityQuery.Overlaps(db, da), Is.EqualTo(o), "Overlaps symmetric, " + at);
+            bool o = Api.Overlaps(da, db);
+            Assert.That((bool)Api.Overlaps(db, da), Is.EqualTo(o), "Overlaps symmetric, " + at);
             if (Math.Abs(d) > 4 * U * s) Assert.That(o, Is.EqualTo(d <= 0), "Overlaps, " + at);
             double len = Len(r.PointB - r.PointA);
             double mag = Math.Max(Len(r.PointA), Len(r.PointB));

@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using NUnit.Framework;
 using ProximityLib.Double;
+using Api = ProximityReference.Api;
 
 namespace ProximityTests.Pairs
 {
@@ -129,16 +130,16 @@ namespace ProximityTests.Pairs
                     Vector3D pa = Rand(rng, dim), qa = Rand(rng, dim), pb = Rand(rng, dim), qb = Rand(rng, dim);
                     double ra = rng.NextDouble() * 0.5, rb = rng.NextDouble() * 0.5;
                     dynamic a = Make(ka, dim, pa, qa, ra), b = Make(kb, dim, pb, qb, rb);
-                    var r = ClosestDistance.Between(a, b);
+                    var r = Api.Between(a, b);
                     foreach (int k in new[] { -900, -300, 7, 300, 900 })
                     {
                         double f = Math.Pow(2, k);
                         dynamic sa = Make(ka, dim, pa * f, qa * f, ra * f), sb = Make(kb, dim, pb * f, qb * f, rb * f);
-                        var s = ClosestDistance.Between(sa, sb);
+                        var s = Api.Between(sa, sb);
                         string at = $"k={k}: {a} vs {b}: {r} / {s}";
                         Assert.That((double)s.Distance, Is.EqualTo((double)r.Distance * f), at);
-                        Assert.That((double)ClosestDistance.Distance(sa, sb), Is.EqualTo((double)r.Distance * f), at);
-                        Assert.That((bool)ProximityQuery.Overlaps(sa, sb), Is.EqualTo((bool)ProximityQuery.Overlaps(a, b)), at);
+                        Assert.That((double)Api.Distance(sa, sb), Is.EqualTo((double)r.Distance * f), at);
+                        Assert.That((bool)Api.Overlaps(sa, sb), Is.EqualTo((bool)Api.Overlaps(a, b)), at);
                         Assert.That((double)s.ParameterA, Is.EqualTo(Param(ka, (double)r.ParameterA, f)), at);
                         Assert.That((double)s.ParameterB, Is.EqualTo(Param(kb, (double)r.ParameterB, f)), at);
                     }
@@ -146,12 +147,12 @@ namespace ProximityTests.Pairs
                     foreach (var (x, y) in new[] { (1e-300, 1e300), (1e300, 1e-300), (1e-300, 1e-300), (1e300, 1e300) })
                     {
                         dynamic ma = Make(ka, dim, pa * x, qa * y, ra * x), mb = Make(kb, dim, pb * y, qb * x, rb * y);
-                        var m = ClosestDistance.Between(ma, mb);
+                        var m = Api.Between(ma, mb);
                         string at = $"mixed {x}/{y}: {ma} vs {mb}: {m}";
                         Assert.That(double.IsFinite((double)m.Distance), Is.True, at);
                         Assert.That(Finite(m.PointA) && Finite(m.PointB), Is.True, at);
                         Assert.That(double.IsFinite((double)m.ParameterA) && double.IsFinite((double)m.ParameterB), Is.True, at);
-                        Assert.That((double)ClosestDistance.Distance(ma, mb), Is.EqualTo((double)m.Distance), at);
+                        Assert.That((double)Api.Distance(ma, mb), Is.EqualTo((double)m.Distance), at);
                     }
                 }
         }

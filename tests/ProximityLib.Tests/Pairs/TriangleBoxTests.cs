@@ -3,6 +3,7 @@ using NUnit.Framework;
 using ProximityLib.Double;
 using static ProximityTests.Support.Expect;
 using static ProximityTests.Pairs.TriangleTesting;
+using Api = ProximityReference.Api;
 
 namespace ProximityTests.Pairs
 {
@@ -61,8 +62,8 @@ namespace ProximityTests.Pairs
                 foreach (object b in new object[] { box, obb })
                 {
                     string at = $"{name}: {t} | {b}";
-                    Assert.That((bool)ProximityQuery.Overlaps(t, (dynamic)b), Is.EqualTo(meet), at);
-                    Assert.That((bool)ProximityQuery.Overlaps((dynamic)b, t), Is.EqualTo(meet), at);
+                    Assert.That((bool)Api.Overlaps(t, b), Is.EqualTo(meet), at);
+                    Assert.That((bool)Api.Overlaps(b, t), Is.EqualTo(meet), at);
                     Assert.That(Check(t, b, ref at), Is.LessThanOrEqualTo(32), at);
                 }
             }

@@ -111,7 +111,7 @@ namespace ProximityTests.Pairs
         private static double PointToShape(Vector3D p, object shape, bool planar) =>
             ExactSigned(planar ? new Vector2D(p.X, p.Y) : (object)p, shape).ToDouble();
 
-        public static DistanceResult3 Between(object a, object b) => AsResult3(ClosestDistance.Between((dynamic)a, (dynamic)b));
+        public static DistanceResult3 Between(object a, object b) => AsResult3(Api.Between(a, b));
 
         private static DistanceResult3 AsResult3(object r) => r switch
         {
@@ -147,13 +147,13 @@ namespace ProximityTests.Pairs
             Assert.That(rs.PointA == r.PointB && rs.PointB == r.PointA, Is.True, "swapped witnesses " + at);
             Assert.That(Bits(rs.ParameterA) == Bits(r.ParameterB) && Bits(rs.ParameterB) == Bits(r.ParameterA), Is.True, "swapped parameters " + at);
             // The distance-only entry points.
-            Assert.That(Bits((double)ClosestDistance.Distance((dynamic)a, (dynamic)b)), Is.EqualTo(Bits(r.Distance)), "Distance " + at);
-            Assert.That(Bits((double)ClosestDistance.Distance((dynamic)b, (dynamic)a)), Is.EqualTo(Bits(r.Distance)), "Distance swapped " + at);
+            Assert.That(Bits((double)Api.Distance(a, b)), Is.EqualTo(Bits(r.Distance)), "Distance " + at);
+            Assert.That(Bits((double)Api.Distance(b, a)), Is.EqualTo(Bits(r.Distance)), "Distance swapped " + at);
             double s = Scale(a, b);
             double e = Error(a, b, r.Distance);
             // Overlaps agrees with the sign outside a tiny band, and is symmetric.
-            bool o = ProximityQuery.Overlaps((dynamic)a, (dynamic)b);
-            Assert.That((bool)ProximityQuery.Overlaps((dynamic)b, (dynamic)a), Is.EqualTo(o), "Overlaps swapped " + at);
+            bool o = Api.Overlaps(a, b);
+            Assert.That((bool)Api.Overlaps(b, a), Is.EqualTo(o), "Overlaps swapped " + at);
             if (Math.Abs(r.Distance) > band * U * s) Assert.That(o, Is.EqualTo(r.Distance <= 0), "Overlaps " + at);
             // The witnesses: on (in) their shapes, and |PointA − PointB| = |Distance|.
             // Witnesses are positions: rounded at the scale of their coordinates too.
@@ -180,7 +180,7 @@ namespace ProximityTests.Pairs
                 Assert.That(q.PointA == r.PointA * f && q.PointB == r.PointB * f, Is.True, w);
                 // A line's or ray's parameter is a length: it scales too.
                 Assert.That(q.ParameterA == r.ParameterA * (IsLinear(a) ? f : 1) && q.ParameterB == r.ParameterB * (IsLinear(b) ? f : 1), Is.True, w);
-                Assert.That((bool)ProximityQuery.Overlaps((dynamic)Scaled(a, f), (dynamic)Scaled(b, f)), Is.EqualTo((bool)ProximityQuery.Overlaps((dynamic)Scaled(a, 1), (dynamic)Scaled(b, 1))), w);
+                Assert.That((bool)Api.Overlaps(Scaled(a, f), Scaled(b, f)), Is.EqualTo((bool)Api.Overlaps(Scaled(a, 1), Scaled(b, 1))), w);
             }
         }
 

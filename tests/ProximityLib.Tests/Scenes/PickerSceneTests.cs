@@ -4,6 +4,7 @@ using System.Numerics;
 using NUnit.Framework;
 using ProximityLib.Scenes.Picker;
 using F = ProximityLib;
+using Api = ProximityReference.Api;
 
 namespace ProximityTests.Scenes
 {
@@ -49,8 +50,8 @@ namespace ProximityTests.Scenes
                 var b = new Primitive(kb, dim, new Vector3(R(rng), R(rng), R(rng)), R(rng), R(rng), 0.5f + (float)rng.NextDouble());
                 var distance = new PickerScene(PickerMode.ClosestDistance, a, b).Evaluate();
                 var proximity = new PickerScene(PickerMode.ProximityQuery, a, b).Evaluate();
-                dynamic expected = F.ClosestDistance.Between((dynamic)a.Shape, (dynamic)b.Shape);
-                bool overlaps = F.ProximityQuery.Overlaps((dynamic)a.Shape, (dynamic)b.Shape);
+                dynamic expected = Api.Between(a.Shape, b.Shape);
+                bool overlaps = Api.Overlaps(a.Shape, b.Shape);
                 Assert.That(distance.Distance, Is.EqualTo((float)expected.Distance), $"{a.Name} vs {b.Name}");
                 Assert.That(proximity.Colliding, Is.EqualTo(overlaps), $"{a.Name} vs {b.Name}");
                 Assert.That(distance.Text, Does.StartWith("Minimum distance: "));

@@ -1,5 +1,6 @@
 using ProximityLib.Double;
 using Dbl = ProximityLib.Double;
+using Api = ProximityReference.Api;
 
 namespace ProximityTests.Support
 {
@@ -20,12 +21,12 @@ namespace ProximityTests.Support
     /// <summary>Calls the library's overloads for any pair at run time, so one test body covers the whole matrix.</summary>
     public static class Call
     {
-        public static Res Distance(TestShape a, TestShape b) => From(Dbl.ClosestDistance.Between((dynamic)a.Double, (dynamic)b.Double));
-        public static bool Overlaps(TestShape a, TestShape b) => Dbl.ProximityQuery.Overlaps((dynamic)a.Double, (dynamic)b.Double);
-        public static double DistanceOnly(TestShape a, TestShape b) => Dbl.ClosestDistance.Distance((dynamic)a.Double, (dynamic)b.Double);
-        public static float DistanceOnlyFloat(TestShape a, TestShape b) => ProximityLib.ClosestDistance.Distance((dynamic)a.ToFloat(), (dynamic)b.ToFloat());
-        public static Res DistanceFloat(TestShape a, TestShape b) => From(ProximityLib.ClosestDistance.Between((dynamic)a.ToFloat(), (dynamic)b.ToFloat()));
-        public static bool OverlapsFloat(TestShape a, TestShape b) => ProximityLib.ProximityQuery.Overlaps((dynamic)a.ToFloat(), (dynamic)b.ToFloat());
+        public static Res Distance(TestShape a, TestShape b) => From(Api.Between(a.Double, b.Double));
+        public static bool Overlaps(TestShape a, TestShape b) => Api.Overlaps(a.Double, b.Double);
+        public static double DistanceOnly(TestShape a, TestShape b) => Api.Distance(a.Double, b.Double);
+        public static float DistanceOnlyFloat(TestShape a, TestShape b) => (float)Api.Distance(a.ToFloat(), b.ToFloat());
+        public static Res DistanceFloat(TestShape a, TestShape b) => From(Api.Between(a.ToFloat(), b.ToFloat()));
+        public static bool OverlapsFloat(TestShape a, TestShape b) => Api.Overlaps(a.ToFloat(), b.ToFloat());
 
         private static Res From(object r) => r switch
         {

@@ -24,6 +24,6 @@ namespace ProximityTests.Support
         }
 
         /// <summary>E of the library's own answer, ClosestDistance.Between(a, b).Distance.</summary>
-        public static double Error(object a, object b) => Error(a, b, (double)ClosestDistance.Between((dynamic)a, (dynamic)b).Distance);
+        public static double Error(object a, object b) => Error(a, b, Api.BetweenDistance(a, b));
     }
 }

@@ -12,70 +12,70 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a capsule and an AABB (3D): the axis segment's solid signed distance to the box less the radius (negative when overlapping: the axis's depth plus the radius); PointA is the axis witness (ParameterA its t) moved by the radius toward the box (apart) or against the push (overlapping; the face's outward normal when the axis just touches), PointB on the box. Algorithm: segment–box (convex piecewise-quadratic minimisation in the box frame; separating-axis depth, Ericson RTCD §5.3.3), then sd(K ⊕ ball r) = sd(K) − r.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Capsule3 a, Aabb3 b)
+        public static DistanceResult3 Between(in Capsule3 a, in Aabb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an AABB and a capsule (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, Capsule3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Aabb3 a, in Capsule3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a capsule and an AABB (2D): the axis segment's solid signed distance to the box less the radius (negative when overlapping: the axis's depth plus the radius); PointA is the axis witness (ParameterA its t) moved by the radius toward the box (apart) or against the push (overlapping; the face's outward normal when the axis just touches), PointB on the box. Algorithm: segment–box (convex piecewise-quadratic minimisation in the box frame; separating-axis depth, Ericson RTCD §5.3.3), then sd(K ⊕ ball r) = sd(K) − r.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Capsule2 a, Aabb2 b)
+        public static DistanceResult2 Between(in Capsule2 a, in Aabb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an AABB and a capsule (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, Capsule2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a capsule and an AABB (3D) without the witness points: the Distance of <see cref="Between(Capsule3, Aabb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Aabb2 a, in Capsule2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a capsule and an AABB (3D) without the witness points: the Distance of <see cref="Between(in Capsule3, in Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Capsule3 a, Aabb3 b) => Between(a, b).Distance;
+        public static double Distance(in Capsule3 a, in Aabb3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an AABB and a capsule (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb3 a, Capsule3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a capsule and an AABB (2D) without the witness points: the Distance of <see cref="Between(Capsule2, Aabb2)"/>, bit for bit.</summary>
+        public static double Distance(in Aabb3 a, in Capsule3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a capsule and an AABB (2D) without the witness points: the Distance of <see cref="Between(in Capsule2, in Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Capsule2 a, Aabb2 b) => Between(a, b).Distance;
+        public static double Distance(in Capsule2 a, in Aabb2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an AABB and a capsule (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb2 a, Capsule2 b) => Distance(b, a);
+        public static double Distance(in Aabb2 a, in Capsule2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Capsule3 a, Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Capsule3 a, in Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Capsule2 a, Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Capsule2 a, in Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a capsule and an AABB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule3 a, Aabb3 b)
+        public static bool Overlaps(in Capsule3 a, in Aabb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an AABB and a capsule (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb3 a, Capsule3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb3 a, in Capsule3 b) => Overlaps(b, a);
         /// <summary>Whether a capsule and an AABB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule2 a, Aabb2 b)
+        public static bool Overlaps(in Capsule2 a, in Aabb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an AABB and a capsule (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb2 a, Capsule2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb2 a, in Capsule2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Capsule3 a, Aabb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Capsule3 a, in Aabb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Capsule2 a, Aabb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Capsule2 a, in Aabb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -12,78 +12,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a capsule and a half-space (3D): the lower axis end's height Normal·(end − Point) less the radius, negative when overlapping; witnesses that end moved down by the radius (end − Normal·radius, ParameterA 0 or 1) and the end's foot on the boundary. An axis parallel to the boundary is witnessed at Start. Algorithm: the height is linear along the axis, so an end is lowest; two dot products from the stored boundary point, less the radius.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Capsule3 a, HalfSpace b)
+        public static DistanceResult3 Between(in Capsule3 a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a half-space and a capsule (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(HalfSpace a, Capsule3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in HalfSpace a, in Capsule3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a capsule and a half-plane (2D): the lower axis end's height Normal·(end − Point) less the radius, negative when overlapping; witnesses that end moved down by the radius (end − Normal·radius, ParameterA 0 or 1) and the end's foot on the boundary. An axis parallel to the boundary is witnessed at Start. Algorithm: the height is linear along the axis, so an end is lowest; two dot products from the stored boundary point, less the radius.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Capsule2 a, HalfPlane b)
+        public static DistanceResult2 Between(in Capsule2 a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a half-plane and a capsule (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Capsule2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a capsule and a half-space (3D) without the witness points: the Distance of <see cref="Between(Capsule3, HalfSpace)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in HalfPlane a, in Capsule2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a capsule and a half-space (3D) without the witness points: the Distance of <see cref="Between(in Capsule3, in HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Capsule3 a, HalfSpace b)
+        public static double Distance(in Capsule3 a, in HalfSpace b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a half-space and a capsule (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfSpace a, Capsule3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a capsule and a half-plane (2D) without the witness points: the Distance of <see cref="Between(Capsule2, HalfPlane)"/>, bit for bit.</summary>
+        public static double Distance(in HalfSpace a, in Capsule3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a capsule and a half-plane (2D) without the witness points: the Distance of <see cref="Between(in Capsule2, in HalfPlane)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Capsule2 a, HalfPlane b)
+        public static double Distance(in Capsule2 a, in HalfPlane b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a half-plane and a capsule (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfPlane a, Capsule2 b) => Distance(b, a);
+        public static double Distance(in HalfPlane a, in Capsule2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Capsule3 a, HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Capsule3 a, in HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Capsule2 a, HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Capsule2 a, in HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a capsule and a half-space (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule3 a, HalfSpace b)
+        public static bool Overlaps(in Capsule3 a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a half-space and a capsule (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, Capsule3 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfSpace a, in Capsule3 b) => Overlaps(b, a);
         /// <summary>Whether a capsule and a half-plane (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule2 a, HalfPlane b)
+        public static bool Overlaps(in Capsule2 a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a half-plane and a capsule (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, Capsule2 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfPlane a, in Capsule2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Capsule3 a, HalfSpace b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Capsule3 a, in HalfSpace b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Capsule2 a, HalfPlane b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Capsule2 a, in HalfPlane b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

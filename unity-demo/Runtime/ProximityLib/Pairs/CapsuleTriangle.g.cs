@@ -12,70 +12,70 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a capsule and a triangle (3D): the axis's solid signed distance to the triangle less the radius: apart, the segment–triangle gap less the radius; an axis through the triangle adds the depth of that crossing (the least push over the triangle's normal and the axis × edge directions), an axis touching or lying in the plane none (equal pushes: the first of N then the axis × edge directions AB, AC, BC, toward −axis first). ParameterA is the axis parameter of the point nearest PointA. Algorithm: segment–triangle distance (see the segment–triangle query) and separating-axis depth of the axis–triangle prism (Ericson RTCD §5.5.7 style sweep), less the radius.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Capsule3 a, Triangle3 b)
+        public static DistanceResult3 Between(in Capsule3 a, in Triangle3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a triangle and a capsule (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Triangle3 a, Capsule3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Triangle3 a, in Capsule3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a capsule and a triangle (2D): the axis's solid signed distance to the solid triangle (the separating-axis depth when the axis enters it, including a degenerate triangle it crosses) less the radius. ParameterA is the axis parameter of the point nearest PointA. Algorithm: the segment–triangle query, less the radius (sd(K ⊕ disc) = sd(K) − r).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Capsule2 a, Triangle2 b)
+        public static DistanceResult2 Between(in Capsule2 a, in Triangle2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a triangle and a capsule (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Triangle2 a, Capsule2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a capsule and a triangle (3D) without the witness points: the Distance of <see cref="Between(Capsule3, Triangle3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Triangle2 a, in Capsule2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a capsule and a triangle (3D) without the witness points: the Distance of <see cref="Between(in Capsule3, in Triangle3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Capsule3 a, Triangle3 b) => Between(a, b).Distance;
+        public static double Distance(in Capsule3 a, in Triangle3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a capsule (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Triangle3 a, Capsule3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a capsule and a triangle (2D) without the witness points: the Distance of <see cref="Between(Capsule2, Triangle2)"/>, bit for bit.</summary>
+        public static double Distance(in Triangle3 a, in Capsule3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a capsule and a triangle (2D) without the witness points: the Distance of <see cref="Between(in Capsule2, in Triangle2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Capsule2 a, Triangle2 b) => Between(a, b).Distance;
+        public static double Distance(in Capsule2 a, in Triangle2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a capsule (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Triangle2 a, Capsule2 b) => Distance(b, a);
+        public static double Distance(in Triangle2 a, in Capsule2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Capsule3 a, Triangle3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Capsule3 a, in Triangle3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Capsule2 a, Triangle2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Capsule2 a, in Triangle2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a capsule and a triangle (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule3 a, Triangle3 b)
+        public static bool Overlaps(in Capsule3 a, in Triangle3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a triangle and a capsule (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle3 a, Capsule3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle3 a, in Capsule3 b) => Overlaps(b, a);
         /// <summary>Whether a capsule and a triangle (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule2 a, Triangle2 b)
+        public static bool Overlaps(in Capsule2 a, in Triangle2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a triangle and a capsule (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle2 a, Capsule2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle2 a, in Capsule2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Capsule3 a, Triangle3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Capsule3 a, in Triangle3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Capsule2 a, Triangle2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Capsule2 a, in Triangle2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -12,60 +12,60 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a half-space and a half-space (3D): exactly opposite normals: the signed gap a.Normal·(b.Point − a.Point) between the parallel boundaries, negative when they overlap (minus the depth), witnessed by the feet on the two boundaries of the midpoint of the stored points. Any other normals: the intersection is unbounded, Distance = −∞ (DistanceSquared 0) and both witnesses are one common point: the midpoint of the stored points when each lies in the other half-space, else the stored point that lies in the other, else a point of both near where the boundaries meet (the midpoint, should that lie beyond the double range). Symmetric: swapping the arguments swaps the witnesses bit for bit. Algorithm: dot products from the stored points; the boundaries' meeting point in a basis built on the accurately formed cross product of the normals (well conditioned however nearly parallel they are), moved inward past its rounding.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(HalfSpace a, HalfSpace b)
+        public static DistanceResult3 Between(in HalfSpace a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a half-plane and a half-plane (2D): exactly opposite normals: the signed gap a.Normal·(b.Point − a.Point) between the parallel boundaries, negative when they overlap (minus the depth), witnessed by the feet on the two boundaries of the midpoint of the stored points. Any other normals: the intersection is unbounded, Distance = −∞ (DistanceSquared 0) and both witnesses are one common point: the midpoint of the stored points when each lies in the other half-plane, else the stored point that lies in the other, else a point of both near where the boundaries meet (the midpoint, should that lie beyond the double range). Symmetric: swapping the arguments swaps the witnesses bit for bit. Algorithm: dot products from the stored points; the boundaries' meeting point in a basis built on the accurately formed cross product of the normals (well conditioned however nearly parallel they are), moved inward past its rounding.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, HalfPlane b)
+        public static DistanceResult2 Between(in HalfPlane a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
-        /// <summary>Signed closest distance between a half-space and a half-space (3D) without the witness points: the Distance of <see cref="Between(HalfSpace, HalfSpace)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a half-space and a half-space (3D) without the witness points: the Distance of <see cref="Between(in HalfSpace, in HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfSpace a, HalfSpace b)
+        public static double Distance(in HalfSpace a, in HalfSpace b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
-        /// <summary>Signed closest distance between a half-plane and a half-plane (2D) without the witness points: the Distance of <see cref="Between(HalfPlane, HalfPlane)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a half-plane and a half-plane (2D) without the witness points: the Distance of <see cref="Between(in HalfPlane, in HalfPlane)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfPlane a, HalfPlane b)
+        public static double Distance(in HalfPlane a, in HalfPlane b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(HalfSpace a, HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in HalfSpace a, in HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(HalfPlane a, HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in HalfPlane a, in HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a half-space and a half-space (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, HalfSpace b)
+        public static bool Overlaps(in HalfSpace a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a half-plane and a half-plane (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, HalfPlane b)
+        public static bool Overlaps(in HalfPlane a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(HalfSpace a, HalfSpace b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in HalfSpace a, in HalfSpace b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(HalfPlane a, HalfPlane b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in HalfPlane a, in HalfPlane b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -12,70 +12,70 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a line and a capsule (3D): negative when the line enters the capsule; 3D: distance of the axes less the radius (the axes' Minkowski difference is flat); witnesses pushed along the unit residual, or for meeting axes along the common normal A.dir × axis (parallel: <c>AnyPerpendicular</c> of A's direction); ParameterA is the line's t, ParameterB the axis parameter. Algorithm: the line cut to the stretch that holds its closest point, then the robust segment–segment kernel (Eberly; Lagrange-identity determinant), less the radius (capsule = segment ⊕ ball).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, Capsule3 b)
+        public static DistanceResult3 Between(in Line3 a, in Capsule3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a capsule and a line (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Capsule3 a, Line3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Capsule3 a, in Line3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a line and a capsule (2D): negative when the line enters the capsule; 2D: separated axes give their distance less the radius; crossing axes give −(radius + the crossing depth of the axes, the smallest push of one axis off the other along a face normal of their Minkowski difference), the witnesses an endpoint and its image across that face, pushed by the radius; ParameterA is the line's t, ParameterB the axis parameter. Algorithm: the line cut to the stretch that holds its closest point, then the robust segment–segment kernel (Eberly), less the radius; crossing depth by the separating-axis test over the normals and directions (Gottschalk).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, Capsule2 b)
+        public static DistanceResult2 Between(in Line2 a, in Capsule2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a capsule and a line (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Capsule2 a, Line2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a line and a capsule (3D) without the witness points: the Distance of <see cref="Between(Line3, Capsule3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Capsule2 a, in Line2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a line and a capsule (3D) without the witness points: the Distance of <see cref="Between(in Line3, in Capsule3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line3 a, Capsule3 b) => Between(a, b).Distance;
+        public static double Distance(in Line3 a, in Capsule3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a capsule and a line (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Capsule3 a, Line3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a line and a capsule (2D) without the witness points: the Distance of <see cref="Between(Line2, Capsule2)"/>, bit for bit.</summary>
+        public static double Distance(in Capsule3 a, in Line3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a line and a capsule (2D) without the witness points: the Distance of <see cref="Between(in Line2, in Capsule2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line2 a, Capsule2 b) => Between(a, b).Distance;
+        public static double Distance(in Line2 a, in Capsule2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a capsule and a line (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Capsule2 a, Line2 b) => Distance(b, a);
+        public static double Distance(in Capsule2 a, in Line2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Line3 a, Capsule3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Line3 a, in Capsule3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Line2 a, Capsule2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Line2 a, in Capsule2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a line and a capsule (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, Capsule3 b)
+        public static bool Overlaps(in Line3 a, in Capsule3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a capsule and a line (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule3 a, Line3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Capsule3 a, in Line3 b) => Overlaps(b, a);
         /// <summary>Whether a line and a capsule (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, Capsule2 b)
+        public static bool Overlaps(in Line2 a, in Capsule2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a capsule and a line (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule2 a, Line2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Capsule2 a, in Line2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Line3 a, Capsule3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Line3 a, in Capsule3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Line2 a, Capsule2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Line2 a, in Capsule2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

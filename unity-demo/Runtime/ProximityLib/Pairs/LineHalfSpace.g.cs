@@ -12,78 +12,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a line and a half-space (3D): a line not exactly parallel to the boundary (by the exact sign of Normal·Direction) crosses it, so the penetration is unbounded: Distance = −∞ (DistanceSquared 0) with both witnesses at the origin (ParameterA 0) when it lies inside or on the boundary, else at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction (ParameterA t; should that point lie beyond the double range, the origin, t = 0). Parallel: the constant height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary. Algorithm: two dot products from the stored boundary point and one division.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, HalfSpace b)
+        public static DistanceResult3 Between(in Line3 a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a half-space and a line (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(HalfSpace a, Line3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in HalfSpace a, in Line3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a line and a half-plane (2D): a line not exactly parallel to the boundary (by the exact sign of Normal·Direction) crosses it, so the penetration is unbounded: Distance = −∞ (DistanceSquared 0) with both witnesses at the origin (ParameterA 0) when it lies inside or on the boundary, else at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction (ParameterA t; should that point lie beyond the double range, the origin, t = 0). Parallel: the constant height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary. Algorithm: two dot products from the stored boundary point and one division.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, HalfPlane b)
+        public static DistanceResult2 Between(in Line2 a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a half-plane and a line (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Line2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a line and a half-space (3D) without the witness points: the Distance of <see cref="Between(Line3, HalfSpace)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in HalfPlane a, in Line2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a line and a half-space (3D) without the witness points: the Distance of <see cref="Between(in Line3, in HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line3 a, HalfSpace b)
+        public static double Distance(in Line3 a, in HalfSpace b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a half-space and a line (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfSpace a, Line3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a line and a half-plane (2D) without the witness points: the Distance of <see cref="Between(Line2, HalfPlane)"/>, bit for bit.</summary>
+        public static double Distance(in HalfSpace a, in Line3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a line and a half-plane (2D) without the witness points: the Distance of <see cref="Between(in Line2, in HalfPlane)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line2 a, HalfPlane b)
+        public static double Distance(in Line2 a, in HalfPlane b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a half-plane and a line (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfPlane a, Line2 b) => Distance(b, a);
+        public static double Distance(in HalfPlane a, in Line2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Line3 a, HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Line3 a, in HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Line2 a, HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Line2 a, in HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a line and a half-space (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, HalfSpace b)
+        public static bool Overlaps(in Line3 a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a half-space and a line (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, Line3 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfSpace a, in Line3 b) => Overlaps(b, a);
         /// <summary>Whether a line and a half-plane (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, HalfPlane b)
+        public static bool Overlaps(in Line2 a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a half-plane and a line (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, Line2 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfPlane a, in Line2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Line3 a, HalfSpace b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Line3 a, in HalfSpace b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Line2 a, HalfPlane b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Line2 a, in HalfPlane b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

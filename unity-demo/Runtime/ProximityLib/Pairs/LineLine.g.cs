@@ -12,52 +12,52 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a line and a line (3D): never negative; parallel lines: the canonically first line's origin and its projection on the other (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the lines' t. Algorithm: gap and closest parameters from the common normal dA × dB formed with exact products (Dekker), so nearly parallel lines keep u·|ΔOrigin| accuracy (Eberly, distance between lines).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, Line3 b)
+        public static DistanceResult3 Between(in Line3 a, in Line3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a line and a line (2D): 0 at the crossing point unless parallel; parallel lines: the canonically first line's origin and its projection on the other (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the lines' t. Algorithm: crossing parameters from the cross product formed with exact products (Dekker), so nearly parallel lines keep their accuracy (Eberly, distance between lines).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, Line2 b)
+        public static DistanceResult2 Between(in Line2 a, in Line2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
-        /// <summary>Signed closest distance between a line and a line (3D) without the witness points: the Distance of <see cref="Between(Line3, Line3)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a line and a line (3D) without the witness points: the Distance of <see cref="Between(in Line3, in Line3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line3 a, Line3 b) => Between(a, b).Distance;
-        /// <summary>Signed closest distance between a line and a line (2D) without the witness points: the Distance of <see cref="Between(Line2, Line2)"/>, bit for bit.</summary>
+        public static double Distance(in Line3 a, in Line3 b) => Between(a, b).Distance;
+        /// <summary>Signed closest distance between a line and a line (2D) without the witness points: the Distance of <see cref="Between(in Line2, in Line2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line2 a, Line2 b) => Between(a, b).Distance;
+        public static double Distance(in Line2 a, in Line2 b) => Between(a, b).Distance;
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Line3 a, Line3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Line3 a, in Line3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Line2 a, Line2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Line2 a, in Line2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a line and a line (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, Line3 b)
+        public static bool Overlaps(in Line3 a, in Line3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a line and a line (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, Line2 b)
+        public static bool Overlaps(in Line2 a, in Line2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Line3 a, Line3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Line3 a, in Line3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Line2 a, Line2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Line2 a, in Line2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -12,70 +12,70 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a line and an OBB (3D): negative when the line passes through the box: minus the least sideways translation (perpendicular to the line) that clears it. Witnesses: ParameterA t with PointA = Origin + t·Direction; where the closest points are not unique (the line parallel to a face or an edge), the end of the stretch of closest points where the bracketing of the convex distance function first lands (a breakpoint where the line crosses a slab plane of the box). Algorithm: in the box frame relative to its centre, the line clipped to the box's projection onto it (widened) and minimised as a segment (convex piecewise quadratic, Ericson RTCD §5.3.3 for the separating axes); depth over the axes Direction × box axis.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, Obb3 b)
+        public static DistanceResult3 Between(in Line3 a, in Obb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an OBB and a line (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Obb3 a, Line3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Obb3 a, in Line3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a line and an OBB (2D): negative when the line passes through the box: minus the least sideways translation (perpendicular to the line) that clears it. Witnesses: ParameterA t with PointA = Origin + t·Direction; where the closest points are not unique (the line parallel to a face or an edge), the end of the stretch of closest points where the bracketing of the convex distance function first lands (a breakpoint where the line crosses a slab plane of the box). Algorithm: in the box frame relative to its centre, the line clipped to the box's projection onto it (widened) and minimised as a segment (convex piecewise quadratic, Ericson RTCD §5.3.3 for the separating axes); depth over the axes Direction × box axis.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, Obb2 b)
+        public static DistanceResult2 Between(in Line2 a, in Obb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an OBB and a line (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Obb2 a, Line2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a line and an OBB (3D) without the witness points: the Distance of <see cref="Between(Line3, Obb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Obb2 a, in Line2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a line and an OBB (3D) without the witness points: the Distance of <see cref="Between(in Line3, in Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line3 a, Obb3 b) => Between(a, b).Distance;
+        public static double Distance(in Line3 a, in Obb3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an OBB and a line (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Obb3 a, Line3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a line and an OBB (2D) without the witness points: the Distance of <see cref="Between(Line2, Obb2)"/>, bit for bit.</summary>
+        public static double Distance(in Obb3 a, in Line3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a line and an OBB (2D) without the witness points: the Distance of <see cref="Between(in Line2, in Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line2 a, Obb2 b) => Between(a, b).Distance;
+        public static double Distance(in Line2 a, in Obb2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an OBB and a line (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Obb2 a, Line2 b) => Distance(b, a);
+        public static double Distance(in Obb2 a, in Line2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Line3 a, Obb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Line3 a, in Obb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Line2 a, Obb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Line2 a, in Obb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a line and an OBB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, Obb3 b)
+        public static bool Overlaps(in Line3 a, in Obb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an OBB and a line (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb3 a, Line3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb3 a, in Line3 b) => Overlaps(b, a);
         /// <summary>Whether a line and an OBB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, Obb2 b)
+        public static bool Overlaps(in Line2 a, in Obb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an OBB and a line (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb2 a, Line2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb2 a, in Line2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Line3 a, Obb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Line3 a, in Obb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Line2 a, Obb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Line2 a, in Obb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

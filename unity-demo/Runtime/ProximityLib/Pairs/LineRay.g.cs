@@ -12,70 +12,70 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a line and a ray (3D): never negative; a ray parallel to the line or pointing away from the lines' closest pair: its origin and the origin's projection on the line; ParameterA is the line's t, ParameterB the ray's t ≥ 0. Algorithm: the lines' closest parameters from the common normal dA × dB formed with exact products (Dekker), else the ray's origin against the line (Eberly, distance between linear components).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, Ray3 b)
+        public static DistanceResult3 Between(in Line3 a, in Ray3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a ray and a line (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Ray3 a, Line3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Ray3 a, in Line3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a line and a ray (2D): never negative (0 where the ray crosses the line); a ray parallel to the line or pointing away from it: its origin and the origin's projection on the line; ParameterA is the line's t, ParameterB the ray's t ≥ 0. Algorithm: the lines' crossing parameters from the cross product formed with exact products (Dekker), else the ray's origin against the line (Eberly, distance between linear components).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, Ray2 b)
+        public static DistanceResult2 Between(in Line2 a, in Ray2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a ray and a line (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Ray2 a, Line2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a line and a ray (3D) without the witness points: the Distance of <see cref="Between(Line3, Ray3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Ray2 a, in Line2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a line and a ray (3D) without the witness points: the Distance of <see cref="Between(in Line3, in Ray3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line3 a, Ray3 b) => Between(a, b).Distance;
+        public static double Distance(in Line3 a, in Ray3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a ray and a line (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Ray3 a, Line3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a line and a ray (2D) without the witness points: the Distance of <see cref="Between(Line2, Ray2)"/>, bit for bit.</summary>
+        public static double Distance(in Ray3 a, in Line3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a line and a ray (2D) without the witness points: the Distance of <see cref="Between(in Line2, in Ray2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line2 a, Ray2 b) => Between(a, b).Distance;
+        public static double Distance(in Line2 a, in Ray2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a ray and a line (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Ray2 a, Line2 b) => Distance(b, a);
+        public static double Distance(in Ray2 a, in Line2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Line3 a, Ray3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Line3 a, in Ray3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Line2 a, Ray2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Line2 a, in Ray2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a line and a ray (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, Ray3 b)
+        public static bool Overlaps(in Line3 a, in Ray3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a ray and a line (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray3 a, Line3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Ray3 a, in Line3 b) => Overlaps(b, a);
         /// <summary>Whether a line and a ray (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, Ray2 b)
+        public static bool Overlaps(in Line2 a, in Ray2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a ray and a line (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray2 a, Line2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Ray2 a, in Line2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Line3 a, Ray3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Line3 a, in Ray3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Line2 a, Ray2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Line2 a, in Ray2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -12,70 +12,70 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a line and a triangle (3D): never negative (neither is solid); crossing (or lying in its plane across it), 0 with one common point as both witnesses; ParameterA t with PointA = Origin + t·Direction; where the minimum is not unique (the line parallel to the triangle over it, or parallel to an edge it passes beside), the first minimum among the crossing, the ends of the line's stretch over the triangle against it, and the line against edges AB, BC, CA. Algorithm: in the frame of vertex A, the line clipped to the stretch of the vertices' projections onto it (widened by their rounding), then segment–triangle: plane crossing tested against the edges along the normal (formed with exact products), else the endpoint–triangle and segment–edge candidates (Ericson RTCD §5.1.5, §5.1.9; Eberly's robust segment distance).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, Triangle3 b)
+        public static DistanceResult3 Between(in Line3 a, in Triangle3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a triangle and a line (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Triangle3 a, Line3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Triangle3 a, in Line3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a line and a triangle (2D): negative when the line crosses the solid triangle: minus the least sideways translation that clears it, min(highest vertex, −lowest vertex) over the line's normal; witnesses the closest pair of the just-touching line (the first minimum over edges AB, BC, CA), PointA moved back; apart, the closest pair against the edges (the first minimum over AB, BC, CA; a line parallel to the nearest edge: one end of the common stretch); touching, one common point as both witnesses; ParameterA t with PointA = Origin + t·Direction; a degenerate triangle is the segment or point it is (never negative). Algorithm: in the frame of vertex A, the line clipped to the triangle's projection (widened by its diameter so the cut ends never lower the depth), then the separating-axis test and depth over the edge normals and the line's normal (Ericson RTCD §4.4, §5.2.1) and segment–edge distances (Eberly's robust segment distance).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, Triangle2 b)
+        public static DistanceResult2 Between(in Line2 a, in Triangle2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a triangle and a line (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Triangle2 a, Line2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a line and a triangle (3D) without the witness points: the Distance of <see cref="Between(Line3, Triangle3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Triangle2 a, in Line2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a line and a triangle (3D) without the witness points: the Distance of <see cref="Between(in Line3, in Triangle3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line3 a, Triangle3 b) => Between(a, b).Distance;
+        public static double Distance(in Line3 a, in Triangle3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a line (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Triangle3 a, Line3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a line and a triangle (2D) without the witness points: the Distance of <see cref="Between(Line2, Triangle2)"/>, bit for bit.</summary>
+        public static double Distance(in Triangle3 a, in Line3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a line and a triangle (2D) without the witness points: the Distance of <see cref="Between(in Line2, in Triangle2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line2 a, Triangle2 b) => Between(a, b).Distance;
+        public static double Distance(in Line2 a, in Triangle2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a line (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Triangle2 a, Line2 b) => Distance(b, a);
+        public static double Distance(in Triangle2 a, in Line2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Line3 a, Triangle3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Line3 a, in Triangle3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Line2 a, Triangle2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Line2 a, in Triangle2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a line and a triangle (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, Triangle3 b)
+        public static bool Overlaps(in Line3 a, in Triangle3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a triangle and a line (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle3 a, Line3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle3 a, in Line3 b) => Overlaps(b, a);
         /// <summary>Whether a line and a triangle (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, Triangle2 b)
+        public static bool Overlaps(in Line2 a, in Triangle2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a triangle and a line (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle2 a, Line2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle2 a, in Line2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Line3 a, Triangle3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Line3 a, in Triangle3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Line2 a, Triangle2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Line2 a, in Triangle2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

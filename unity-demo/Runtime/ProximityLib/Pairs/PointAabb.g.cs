@@ -12,65 +12,65 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a point and an AABB (3D): negative inside (depth to the nearest face, ties to the lower axis, min face first). Algorithm: clamp to the box (Ericson RTCD §5.1.3; paper Eq. 22); nearest face when inside.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Vector3D a, Aabb3 b)
+        public static DistanceResult3 Between(in Vector3D a, in Aabb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an AABB and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, Vector3D b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Aabb3 a, in Vector3D b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and an AABB (2D): negative inside (depth to the nearest face, ties to the lower axis, min face first). Algorithm: clamp to the box (Ericson RTCD §5.1.3; paper Eq. 22); nearest face when inside.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Vector2D a, Aabb2 b)
+        public static DistanceResult2 Between(in Vector2D a, in Aabb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an AABB and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, Vector2D b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a point and an AABB (3D) without the witness points: the Distance of <see cref="Between(Vector3D, Aabb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Aabb2 a, in Vector2D b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a point and an AABB (3D) without the witness points: the Distance of <see cref="Between(in Vector3D, in Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector3D a, Aabb3 b)
+        public static double Distance(in Vector3D a, in Aabb3 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between an AABB and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb3 a, Vector3D b) => Distance(b, a);
-        /// <summary>Signed closest distance between a point and an AABB (2D) without the witness points: the Distance of <see cref="Between(Vector2D, Aabb2)"/>, bit for bit.</summary>
+        public static double Distance(in Aabb3 a, in Vector3D b) => Distance(b, a);
+        /// <summary>Signed closest distance between a point and an AABB (2D) without the witness points: the Distance of <see cref="Between(in Vector2D, in Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector2D a, Aabb2 b)
+        public static double Distance(in Vector2D a, in Aabb2 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between an AABB and a point (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb2 a, Vector2D b) => Distance(b, a);
+        public static double Distance(in Aabb2 a, in Vector2D b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Vector3D a, Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Vector3D a, in Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Vector2D a, Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Vector2D a, in Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and an AABB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3D a, Aabb3 b) => Core(a, b);
+        public static bool Overlaps(in Vector3D a, in Aabb3 b) => Core(a, b);
         /// <summary>Whether an AABB and a point (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb3 a, Vector3D b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb3 a, in Vector3D b) => Overlaps(b, a);
         /// <summary>Whether a point and an AABB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2D a, Aabb2 b) => Core(a, b);
+        public static bool Overlaps(in Vector2D a, in Aabb2 b) => Core(a, b);
         /// <summary>Whether an AABB and a point (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb2 a, Vector2D b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb2 a, in Vector2D b) => Overlaps(b, a);
     }
 }
 

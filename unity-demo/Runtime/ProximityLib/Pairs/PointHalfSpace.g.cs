@@ -12,78 +12,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a point and a half-space (3D): Normal·(point − Point), negative inside (minus the depth); witnesses the point and its foot on the boundary. Algorithm: one dot product from the stored boundary point (Ericson RTCD §5.1.1).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Vector3D a, HalfSpace b)
+        public static DistanceResult3 Between(in Vector3D a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a half-space and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(HalfSpace a, Vector3D b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in HalfSpace a, in Vector3D b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and a half-plane (2D): Normal·(point − Point), negative inside (minus the depth); witnesses the point and its foot on the boundary. Algorithm: one dot product from the stored boundary point (Ericson RTCD §5.1.1).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Vector2D a, HalfPlane b)
+        public static DistanceResult2 Between(in Vector2D a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a half-plane and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Vector2D b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a point and a half-space (3D) without the witness points: the Distance of <see cref="Between(Vector3D, HalfSpace)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in HalfPlane a, in Vector2D b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a point and a half-space (3D) without the witness points: the Distance of <see cref="Between(in Vector3D, in HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector3D a, HalfSpace b)
+        public static double Distance(in Vector3D a, in HalfSpace b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a half-space and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfSpace a, Vector3D b) => Distance(b, a);
-        /// <summary>Signed closest distance between a point and a half-plane (2D) without the witness points: the Distance of <see cref="Between(Vector2D, HalfPlane)"/>, bit for bit.</summary>
+        public static double Distance(in HalfSpace a, in Vector3D b) => Distance(b, a);
+        /// <summary>Signed closest distance between a point and a half-plane (2D) without the witness points: the Distance of <see cref="Between(in Vector2D, in HalfPlane)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector2D a, HalfPlane b)
+        public static double Distance(in Vector2D a, in HalfPlane b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a half-plane and a point (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfPlane a, Vector2D b) => Distance(b, a);
+        public static double Distance(in HalfPlane a, in Vector2D b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Vector3D a, HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Vector3D a, in HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Vector2D a, HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Vector2D a, in HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and a half-space (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3D a, HalfSpace b)
+        public static bool Overlaps(in Vector3D a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a half-space and a point (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, Vector3D b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfSpace a, in Vector3D b) => Overlaps(b, a);
         /// <summary>Whether a point and a half-plane (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2D a, HalfPlane b)
+        public static bool Overlaps(in Vector2D a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a half-plane and a point (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, Vector2D b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfPlane a, in Vector2D b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Vector3D a, HalfSpace b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Vector3D a, in HalfSpace b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Vector2D a, HalfPlane b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Vector2D a, in HalfPlane b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -12,65 +12,65 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a point and a line (3D): never negative; ParameterB is the projection parameter t = Direction·(point − Origin). Algorithm: orthogonal projection with the residual formed from the difference to the origin (Eberly, "Distance from a point to a line").</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Vector3D a, Line3 b)
+        public static DistanceResult3 Between(in Vector3D a, in Line3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a line and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, Vector3D b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Line3 a, in Vector3D b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and a line (2D): never negative; ParameterB is the projection parameter t = Direction·(point − Origin). Algorithm: orthogonal projection with the residual formed from the difference to the origin (Eberly, "Distance from a point to a line").</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Vector2D a, Line2 b)
+        public static DistanceResult2 Between(in Vector2D a, in Line2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a line and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, Vector2D b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a point and a line (3D) without the witness points: the Distance of <see cref="Between(Vector3D, Line3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Line2 a, in Vector2D b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a point and a line (3D) without the witness points: the Distance of <see cref="Between(in Vector3D, in Line3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector3D a, Line3 b)
+        public static double Distance(in Vector3D a, in Line3 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a line and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line3 a, Vector3D b) => Distance(b, a);
-        /// <summary>Signed closest distance between a point and a line (2D) without the witness points: the Distance of <see cref="Between(Vector2D, Line2)"/>, bit for bit.</summary>
+        public static double Distance(in Line3 a, in Vector3D b) => Distance(b, a);
+        /// <summary>Signed closest distance between a point and a line (2D) without the witness points: the Distance of <see cref="Between(in Vector2D, in Line2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector2D a, Line2 b)
+        public static double Distance(in Vector2D a, in Line2 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a line and a point (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Line2 a, Vector2D b) => Distance(b, a);
+        public static double Distance(in Line2 a, in Vector2D b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Vector3D a, Line3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Vector3D a, in Line3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Vector2D a, Line2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Vector2D a, in Line2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and a line (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3D a, Line3 b) => Core(a, b);
+        public static bool Overlaps(in Vector3D a, in Line3 b) => Core(a, b);
         /// <summary>Whether a line and a point (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, Vector3D b) => Overlaps(b, a);
+        public static bool Overlaps(in Line3 a, in Vector3D b) => Overlaps(b, a);
         /// <summary>Whether a point and a line (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2D a, Line2 b) => Core(a, b);
+        public static bool Overlaps(in Vector2D a, in Line2 b) => Core(a, b);
         /// <summary>Whether a line and a point (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, Vector2D b) => Overlaps(b, a);
+        public static bool Overlaps(in Line2 a, in Vector2D b) => Overlaps(b, a);
     }
 }
 

@@ -12,47 +12,47 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a point and a point (3D): never negative; Distance = |b − a|. Algorithm: Euclidean distance (paper Eq. 7–8).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Vector3D a, Vector3D b)
+        public static DistanceResult3 Between(in Vector3D a, in Vector3D b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a point and a point (2D): never negative; Distance = |b − a|. Algorithm: Euclidean distance (paper Eq. 7–8).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Vector2D a, Vector2D b)
+        public static DistanceResult2 Between(in Vector2D a, in Vector2D b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
-        /// <summary>Signed closest distance between a point and a point (3D) without the witness points: the Distance of <see cref="Between(Vector3D, Vector3D)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a point and a point (3D) without the witness points: the Distance of <see cref="Between(in Vector3D, in Vector3D)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector3D a, Vector3D b)
+        public static double Distance(in Vector3D a, in Vector3D b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
-        /// <summary>Signed closest distance between a point and a point (2D) without the witness points: the Distance of <see cref="Between(Vector2D, Vector2D)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a point and a point (2D) without the witness points: the Distance of <see cref="Between(in Vector2D, in Vector2D)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector2D a, Vector2D b)
+        public static double Distance(in Vector2D a, in Vector2D b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Vector3D a, Vector3D b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Vector3D a, in Vector3D b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Vector2D a, Vector2D b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Vector2D a, in Vector2D b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and a point (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3D a, Vector3D b) => Core(a, b);
+        public static bool Overlaps(in Vector3D a, in Vector3D b) => Core(a, b);
         /// <summary>Whether a point and a point (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2D a, Vector2D b) => Core(a, b);
+        public static bool Overlaps(in Vector2D a, in Vector2D b) => Core(a, b);
     }
 }
 

@@ -12,70 +12,70 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a point and a triangle (3D): never negative (the triangle is two-sided, not solid); a degenerate triangle is the segment or point it is. Algorithm: the height along the normal (formed with exact products, so slivers keep their accuracy) when the point projects into the triangle, else the nearest edge by clamped projection (Ericson RTCD §5.1.5, with Eberly's robust point–segment residual).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Vector3D a, Triangle3 b)
+        public static DistanceResult3 Between(in Vector3D a, in Triangle3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a triangle and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Triangle3 a, Vector3D b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Triangle3 a, in Vector3D b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and a triangle (2D): negative inside the solid triangle, minus the distance to the nearest edge, with PointB the point on that edge (the first of equal edges AB, BC, CA); a degenerate triangle is the segment or point it is (never negative). Algorithm: orientation signs against the exactly-signed area, then the nearest edge by clamped projection (Ericson RTCD §5.1.5).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Vector2D a, Triangle2 b)
+        public static DistanceResult2 Between(in Vector2D a, in Triangle2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a triangle and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Triangle2 a, Vector2D b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a point and a triangle (3D) without the witness points: the Distance of <see cref="Between(Vector3D, Triangle3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Triangle2 a, in Vector2D b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a point and a triangle (3D) without the witness points: the Distance of <see cref="Between(in Vector3D, in Triangle3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector3D a, Triangle3 b) => Between(a, b).Distance;
+        public static double Distance(in Vector3D a, in Triangle3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Triangle3 a, Vector3D b) => Distance(b, a);
-        /// <summary>Signed closest distance between a point and a triangle (2D) without the witness points: the Distance of <see cref="Between(Vector2D, Triangle2)"/>, bit for bit.</summary>
+        public static double Distance(in Triangle3 a, in Vector3D b) => Distance(b, a);
+        /// <summary>Signed closest distance between a point and a triangle (2D) without the witness points: the Distance of <see cref="Between(in Vector2D, in Triangle2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Vector2D a, Triangle2 b) => Between(a, b).Distance;
+        public static double Distance(in Vector2D a, in Triangle2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a point (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Triangle2 a, Vector2D b) => Distance(b, a);
+        public static double Distance(in Triangle2 a, in Vector2D b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Vector3D a, Triangle3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Vector3D a, in Triangle3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Vector2D a, Triangle2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Vector2D a, in Triangle2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and a triangle (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3D a, Triangle3 b)
+        public static bool Overlaps(in Vector3D a, in Triangle3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a triangle and a point (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle3 a, Vector3D b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle3 a, in Vector3D b) => Overlaps(b, a);
         /// <summary>Whether a point and a triangle (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2D a, Triangle2 b)
+        public static bool Overlaps(in Vector2D a, in Triangle2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a triangle and a point (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle2 a, Vector2D b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle2 a, in Vector2D b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Vector3D a, Triangle3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Vector3D a, in Triangle3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Vector2D a, Triangle2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Vector2D a, in Triangle2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -12,52 +12,52 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a ray and a ray (3D): never negative; where the minimum is not unique (parallel rays) the canonically first ray's origin and its nearest point on the other when that is no farther, else the other's origin and its nearest point on the first (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the rays' t ≥ 0. Algorithm: the lines' closest parameters from the common normal dA × dB formed with exact products (Dekker); when either is negative, the better of each origin against the other ray (convex objective: the minimum lies on the boundary of the parameter quadrant; Eberly, distance between linear components).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Ray3 a, Ray3 b)
+        public static DistanceResult3 Between(in Ray3 a, in Ray3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a ray and a ray (2D): never negative (0 where they cross); where the minimum is not unique (parallel rays) the canonically first ray's origin and its nearest point on the other when that is no farther, else the other's origin and its nearest point on the first (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the rays' t ≥ 0. Algorithm: the lines' crossing parameters from the cross product formed with exact products (Dekker); when either is negative, the better of each origin against the other ray (Eberly, distance between linear components).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Ray2 a, Ray2 b)
+        public static DistanceResult2 Between(in Ray2 a, in Ray2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
-        /// <summary>Signed closest distance between a ray and a ray (3D) without the witness points: the Distance of <see cref="Between(Ray3, Ray3)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a ray and a ray (3D) without the witness points: the Distance of <see cref="Between(in Ray3, in Ray3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Ray3 a, Ray3 b) => Between(a, b).Distance;
-        /// <summary>Signed closest distance between a ray and a ray (2D) without the witness points: the Distance of <see cref="Between(Ray2, Ray2)"/>, bit for bit.</summary>
+        public static double Distance(in Ray3 a, in Ray3 b) => Between(a, b).Distance;
+        /// <summary>Signed closest distance between a ray and a ray (2D) without the witness points: the Distance of <see cref="Between(in Ray2, in Ray2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Ray2 a, Ray2 b) => Between(a, b).Distance;
+        public static double Distance(in Ray2 a, in Ray2 b) => Between(a, b).Distance;
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Ray3 a, Ray3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Ray3 a, in Ray3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Ray2 a, Ray2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Ray2 a, in Ray2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a ray and a ray (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray3 a, Ray3 b)
+        public static bool Overlaps(in Ray3 a, in Ray3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a ray and a ray (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray2 a, Ray2 b)
+        public static bool Overlaps(in Ray2 a, in Ray2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Ray3 a, Ray3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Ray3 a, in Ray3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Ray2 a, Ray2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Ray2 a, in Ray2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

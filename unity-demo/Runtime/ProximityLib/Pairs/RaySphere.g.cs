@@ -12,78 +12,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a ray and a sphere (3D): negative when the ray enters the sphere (depth = radius − distance from the center to the ray); PointB on the sphere along the normal from the ray (a center on the ray: PointB = center − <c>AnyPerpendicular</c>(direction)·radius); ParameterA is the ray's t, the projection clamped at 0. Algorithm: projection of the center clamped at the origin (residual formed from differences, Eberly), less the radius.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Ray3 a, Sphere b)
+        public static DistanceResult3 Between(in Ray3 a, in Sphere b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a sphere and a ray (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Ray3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Sphere a, in Ray3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a ray and a circle (2D): negative when the ray enters the circle (depth = radius − distance from the center to the ray); PointB on the circle along the normal from the ray (a center on the ray: PointB = center − (y, −x)·radius for the direction (x, y)); ParameterA is the ray's t, the projection clamped at 0. Algorithm: projection of the center clamped at the origin (residual formed from differences, Eberly), less the radius.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Ray2 a, Circle b)
+        public static DistanceResult2 Between(in Ray2 a, in Circle b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a circle and a ray (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Ray2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a ray and a sphere (3D) without the witness points: the Distance of <see cref="Between(Ray3, Sphere)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Circle a, in Ray2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a ray and a sphere (3D) without the witness points: the Distance of <see cref="Between(in Ray3, in Sphere)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Ray3 a, Sphere b)
+        public static double Distance(in Ray3 a, in Sphere b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a sphere and a ray (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Sphere a, Ray3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a ray and a circle (2D) without the witness points: the Distance of <see cref="Between(Ray2, Circle)"/>, bit for bit.</summary>
+        public static double Distance(in Sphere a, in Ray3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a ray and a circle (2D) without the witness points: the Distance of <see cref="Between(in Ray2, in Circle)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Ray2 a, Circle b)
+        public static double Distance(in Ray2 a, in Circle b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a circle and a ray (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Circle a, Ray2 b) => Distance(b, a);
+        public static double Distance(in Circle a, in Ray2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Ray3 a, Sphere b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Ray3 a, in Sphere b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Ray2 a, Circle b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Ray2 a, in Circle b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a ray and a sphere (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray3 a, Sphere b)
+        public static bool Overlaps(in Ray3 a, in Sphere b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a sphere and a ray (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Ray3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Sphere a, in Ray3 b) => Overlaps(b, a);
         /// <summary>Whether a ray and a circle (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray2 a, Circle b)
+        public static bool Overlaps(in Ray2 a, in Circle b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a circle and a ray (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Ray2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Circle a, in Ray2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Ray3 a, Sphere b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Ray3 a, in Sphere b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Ray2 a, Circle b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Ray2 a, in Circle b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

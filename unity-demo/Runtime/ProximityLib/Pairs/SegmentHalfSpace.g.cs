@@ -12,78 +12,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a segment and a half-space (3D): the lower endpoint's height Normal·(end − Point), negative when the segment enters (minus the depth of its deepest end); witnesses that endpoint (ParameterA 0 or 1) and its foot on the boundary. A segment parallel to the boundary (equal heights) is witnessed at Start. Algorithm: the height is linear along the segment, so an endpoint is lowest; two dot products from the stored boundary point.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Segment3 a, HalfSpace b)
+        public static DistanceResult3 Between(in Segment3 a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a half-space and a segment (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(HalfSpace a, Segment3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in HalfSpace a, in Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and a half-plane (2D): the lower endpoint's height Normal·(end − Point), negative when the segment enters (minus the depth of its deepest end); witnesses that endpoint (ParameterA 0 or 1) and its foot on the boundary. A segment parallel to the boundary (equal heights) is witnessed at Start. Algorithm: the height is linear along the segment, so an endpoint is lowest; two dot products from the stored boundary point.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, HalfPlane b)
+        public static DistanceResult2 Between(in Segment2 a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a half-plane and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Segment2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a segment and a half-space (3D) without the witness points: the Distance of <see cref="Between(Segment3, HalfSpace)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in HalfPlane a, in Segment2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a segment and a half-space (3D) without the witness points: the Distance of <see cref="Between(in Segment3, in HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment3 a, HalfSpace b)
+        public static double Distance(in Segment3 a, in HalfSpace b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a half-space and a segment (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfSpace a, Segment3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a segment and a half-plane (2D) without the witness points: the Distance of <see cref="Between(Segment2, HalfPlane)"/>, bit for bit.</summary>
+        public static double Distance(in HalfSpace a, in Segment3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a segment and a half-plane (2D) without the witness points: the Distance of <see cref="Between(in Segment2, in HalfPlane)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment2 a, HalfPlane b)
+        public static double Distance(in Segment2 a, in HalfPlane b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a half-plane and a segment (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(HalfPlane a, Segment2 b) => Distance(b, a);
+        public static double Distance(in HalfPlane a, in Segment2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Segment3 a, HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Segment3 a, in HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Segment2 a, HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Segment2 a, in HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and a half-space (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment3 a, HalfSpace b)
+        public static bool Overlaps(in Segment3 a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a half-space and a segment (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, Segment3 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfSpace a, in Segment3 b) => Overlaps(b, a);
         /// <summary>Whether a segment and a half-plane (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment2 a, HalfPlane b)
+        public static bool Overlaps(in Segment2 a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a half-plane and a segment (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, Segment2 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfPlane a, in Segment2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Segment3 a, HalfSpace b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Segment3 a, in HalfSpace b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Segment2 a, HalfPlane b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Segment2 a, in HalfPlane b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

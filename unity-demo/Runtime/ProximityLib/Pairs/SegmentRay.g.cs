@@ -12,70 +12,70 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a segment and a ray (3D): never negative; for a segment parallel to the ray the first endpoint minimum of the segment kernel on the cut ray; ParameterA is the segment parameter, ParameterB the ray's t ≥ 0. Algorithm: the ray cut to the stretch between the projections of the segment's endpoints clamped at 0 (it holds a closest point), then the robust segment–segment kernel (Eberly; Lagrange-identity determinant) in the frame of the ray's origin.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Segment3 a, Ray3 b)
+        public static DistanceResult3 Between(in Segment3 a, in Ray3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a ray and a segment (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Ray3 a, Segment3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Ray3 a, in Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and a ray (2D): never negative (0 where they cross); for a segment parallel to the ray the first endpoint minimum of the segment kernel on the cut ray; ParameterA is the segment parameter, ParameterB the ray's t ≥ 0. Algorithm: the ray cut to the stretch between the projections of the segment's endpoints clamped at 0 (it holds a closest point), then the robust segment–segment kernel (Eberly; Lagrange-identity determinant) in the frame of the ray's origin.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, Ray2 b)
+        public static DistanceResult2 Between(in Segment2 a, in Ray2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a ray and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Ray2 a, Segment2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a segment and a ray (3D) without the witness points: the Distance of <see cref="Between(Segment3, Ray3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Ray2 a, in Segment2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a segment and a ray (3D) without the witness points: the Distance of <see cref="Between(in Segment3, in Ray3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment3 a, Ray3 b) => Between(a, b).Distance;
+        public static double Distance(in Segment3 a, in Ray3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a ray and a segment (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Ray3 a, Segment3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a segment and a ray (2D) without the witness points: the Distance of <see cref="Between(Segment2, Ray2)"/>, bit for bit.</summary>
+        public static double Distance(in Ray3 a, in Segment3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a segment and a ray (2D) without the witness points: the Distance of <see cref="Between(in Segment2, in Ray2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment2 a, Ray2 b) => Between(a, b).Distance;
+        public static double Distance(in Segment2 a, in Ray2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a ray and a segment (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Ray2 a, Segment2 b) => Distance(b, a);
+        public static double Distance(in Ray2 a, in Segment2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Segment3 a, Ray3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Segment3 a, in Ray3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Segment2 a, Ray2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Segment2 a, in Ray2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and a ray (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment3 a, Ray3 b)
+        public static bool Overlaps(in Segment3 a, in Ray3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a ray and a segment (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray3 a, Segment3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Ray3 a, in Segment3 b) => Overlaps(b, a);
         /// <summary>Whether a segment and a ray (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment2 a, Ray2 b)
+        public static bool Overlaps(in Segment2 a, in Ray2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a ray and a segment (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray2 a, Segment2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Ray2 a, in Segment2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Segment3 a, Ray3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Segment3 a, in Ray3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Segment2 a, Ray2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Segment2 a, in Ray2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -12,60 +12,60 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a segment and a segment (3D): never negative; for parallel overlapping segments one of the closest pairs (the first minimum among the endpoint pairs, docs/api.md), the same in either argument order. Algorithm: interior stationary point with the Lagrange-identity determinant, else the four endpoint–segment candidates (Eberly, robust segment distance; replaces paper Eq. 13–15).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Segment3 a, Segment3 b)
+        public static DistanceResult3 Between(in Segment3 a, in Segment3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a segment and a segment (2D): never negative; for parallel overlapping segments one of the closest pairs (the first minimum among the endpoint pairs, docs/api.md), the same in either argument order. Algorithm: interior stationary point with the Lagrange-identity determinant, else the four endpoint–segment candidates (Eberly, robust segment distance; replaces paper Eq. 13–15).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, Segment2 b)
+        public static DistanceResult2 Between(in Segment2 a, in Segment2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
-        /// <summary>Signed closest distance between a segment and a segment (3D) without the witness points: the Distance of <see cref="Between(Segment3, Segment3)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a segment and a segment (3D) without the witness points: the Distance of <see cref="Between(in Segment3, in Segment3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment3 a, Segment3 b)
+        public static double Distance(in Segment3 a, in Segment3 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
-        /// <summary>Signed closest distance between a segment and a segment (2D) without the witness points: the Distance of <see cref="Between(Segment2, Segment2)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a segment and a segment (2D) without the witness points: the Distance of <see cref="Between(in Segment2, in Segment2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment2 a, Segment2 b)
+        public static double Distance(in Segment2 a, in Segment2 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Segment3 a, Segment3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Segment3 a, in Segment3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Segment2 a, Segment2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Segment2 a, in Segment2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and a segment (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment3 a, Segment3 b)
+        public static bool Overlaps(in Segment3 a, in Segment3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a segment and a segment (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment2 a, Segment2 b)
+        public static bool Overlaps(in Segment2 a, in Segment2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Segment3 a, Segment3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Segment3 a, in Segment3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Segment2 a, Segment2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Segment2 a, in Segment2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

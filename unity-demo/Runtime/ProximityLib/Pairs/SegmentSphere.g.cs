@@ -12,78 +12,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a segment and a sphere (3D): negative when the segment enters the sphere (depth = radius − distance from center to segment). Algorithm: point–segment distance from the center, less the radius (paper Eq. 16).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Segment3 a, Sphere b)
+        public static DistanceResult3 Between(in Segment3 a, in Sphere b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a sphere and a segment (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Segment3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Sphere a, in Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and a circle (2D): negative when the segment enters the sphere (depth = radius − distance from center to segment). Algorithm: point–segment distance from the center, less the radius (paper Eq. 16).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, Circle b)
+        public static DistanceResult2 Between(in Segment2 a, in Circle b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a circle and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Segment2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a segment and a sphere (3D) without the witness points: the Distance of <see cref="Between(Segment3, Sphere)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Circle a, in Segment2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a segment and a sphere (3D) without the witness points: the Distance of <see cref="Between(in Segment3, in Sphere)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment3 a, Sphere b)
+        public static double Distance(in Segment3 a, in Sphere b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a sphere and a segment (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Sphere a, Segment3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a segment and a circle (2D) without the witness points: the Distance of <see cref="Between(Segment2, Circle)"/>, bit for bit.</summary>
+        public static double Distance(in Sphere a, in Segment3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a segment and a circle (2D) without the witness points: the Distance of <see cref="Between(in Segment2, in Circle)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment2 a, Circle b)
+        public static double Distance(in Segment2 a, in Circle b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a circle and a segment (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Circle a, Segment2 b) => Distance(b, a);
+        public static double Distance(in Circle a, in Segment2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Segment3 a, Sphere b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Segment3 a, in Sphere b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Segment2 a, Circle b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Segment2 a, in Circle b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and a sphere (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment3 a, Sphere b)
+        public static bool Overlaps(in Segment3 a, in Sphere b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a sphere and a segment (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Segment3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Sphere a, in Segment3 b) => Overlaps(b, a);
         /// <summary>Whether a segment and a circle (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment2 a, Circle b)
+        public static bool Overlaps(in Segment2 a, in Circle b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a circle and a segment (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Segment2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Circle a, in Segment2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Segment3 a, Sphere b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Segment3 a, in Sphere b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Segment2 a, Circle b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Segment2 a, in Circle b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -12,70 +12,70 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a segment and a triangle (3D): never negative (neither is solid); crossing, 0 with the crossing point as both witnesses; where the minimum is not unique (a segment parallel to the triangle over it, or lying in its plane across it), the first minimum among the crossing, the endpoints Start and End against the triangle, and the segment against edges AB, BC, CA. Algorithm: plane crossing tested against the edges along the normal (formed with exact products), else the endpoint–triangle and segment–edge candidates (Ericson RTCD §5.1.5 and §5.1.9; Eberly's robust segment distance).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Segment3 a, Triangle3 b)
+        public static DistanceResult3 Between(in Segment3 a, in Triangle3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a triangle and a segment (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Triangle3 a, Segment3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Triangle3 a, in Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and a triangle (2D): negative when the segment enters the solid triangle (minimum translation over the separating-axis candidates: the edge normals and the segment's normal); apart, the closest pair against the edges (the first minimum over AB, BC, CA); a degenerate triangle is the segment or point it is (never negative). Algorithm: separating-axis test and depth (Ericson RTCD §4.4, §5.2.1), segment–edge distances (Eberly's robust segment distance).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, Triangle2 b)
+        public static DistanceResult2 Between(in Segment2 a, in Triangle2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a triangle and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Triangle2 a, Segment2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a segment and a triangle (3D) without the witness points: the Distance of <see cref="Between(Segment3, Triangle3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Triangle2 a, in Segment2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a segment and a triangle (3D) without the witness points: the Distance of <see cref="Between(in Segment3, in Triangle3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment3 a, Triangle3 b) => Between(a, b).Distance;
+        public static double Distance(in Segment3 a, in Triangle3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a segment (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Triangle3 a, Segment3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a segment and a triangle (2D) without the witness points: the Distance of <see cref="Between(Segment2, Triangle2)"/>, bit for bit.</summary>
+        public static double Distance(in Triangle3 a, in Segment3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a segment and a triangle (2D) without the witness points: the Distance of <see cref="Between(in Segment2, in Triangle2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Segment2 a, Triangle2 b) => Between(a, b).Distance;
+        public static double Distance(in Segment2 a, in Triangle2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a segment (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Triangle2 a, Segment2 b) => Distance(b, a);
+        public static double Distance(in Triangle2 a, in Segment2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Segment3 a, Triangle3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Segment3 a, in Triangle3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Segment2 a, Triangle2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Segment2 a, in Triangle2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and a triangle (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment3 a, Triangle3 b)
+        public static bool Overlaps(in Segment3 a, in Triangle3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a triangle and a segment (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle3 a, Segment3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle3 a, in Segment3 b) => Overlaps(b, a);
         /// <summary>Whether a segment and a triangle (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment2 a, Triangle2 b)
+        public static bool Overlaps(in Segment2 a, in Triangle2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a triangle and a segment (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle2 a, Segment2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle2 a, in Segment2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Segment3 a, Triangle3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Segment3 a, in Triangle3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Segment2 a, Triangle2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Segment2 a, in Triangle2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -12,78 +12,78 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a sphere and a capsule (3D): negative when they overlap (depth = sum of the radii − distance from the center to the axis); the witnesses lie along the axis normal through the center (a center on the axis: along <c>AnyPerpendicular</c> of the axis, +X for a zero-length axis); ParameterB is the axis parameter. Algorithm: point–segment distance from the center to the axis less both radii (Eberly, robust point–segment; capsule = segment ⊕ ball).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Capsule3 b)
+        public static DistanceResult3 Between(in Sphere a, in Capsule3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a capsule and a sphere (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Capsule3 a, Sphere b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Capsule3 a, in Sphere b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a circle and a capsule (2D): negative when they overlap (depth = sum of the radii − distance from the center to the axis); the witnesses lie along the axis normal through the center (a center on the axis: along the axis's normal (y, −x), +X for a zero-length axis); ParameterB is the axis parameter. Algorithm: point–segment distance from the center to the axis less both radii (Eberly, robust point–segment; capsule = segment ⊕ disc).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Capsule2 b)
+        public static DistanceResult2 Between(in Circle a, in Capsule2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a capsule and a circle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Capsule2 a, Circle b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a sphere and a capsule (3D) without the witness points: the Distance of <see cref="Between(Sphere, Capsule3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Capsule2 a, in Circle b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a sphere and a capsule (3D) without the witness points: the Distance of <see cref="Between(in Sphere, in Capsule3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Sphere a, Capsule3 b)
+        public static double Distance(in Sphere a, in Capsule3 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a capsule and a sphere (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Capsule3 a, Sphere b) => Distance(b, a);
-        /// <summary>Signed closest distance between a circle and a capsule (2D) without the witness points: the Distance of <see cref="Between(Circle, Capsule2)"/>, bit for bit.</summary>
+        public static double Distance(in Capsule3 a, in Sphere b) => Distance(b, a);
+        /// <summary>Signed closest distance between a circle and a capsule (2D) without the witness points: the Distance of <see cref="Between(in Circle, in Capsule2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Circle a, Capsule2 b)
+        public static double Distance(in Circle a, in Capsule2 b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
         /// <summary>Signed closest distance between a capsule and a circle (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Capsule2 a, Circle b) => Distance(b, a);
+        public static double Distance(in Capsule2 a, in Circle b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Sphere a, Capsule3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Sphere a, in Capsule3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Circle a, Capsule2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Circle a, in Capsule2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and a capsule (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Capsule3 b)
+        public static bool Overlaps(in Sphere a, in Capsule3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a capsule and a sphere (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule3 a, Sphere b) => Overlaps(b, a);
+        public static bool Overlaps(in Capsule3 a, in Sphere b) => Overlaps(b, a);
         /// <summary>Whether a circle and a capsule (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Capsule2 b)
+        public static bool Overlaps(in Circle a, in Capsule2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a capsule and a circle (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule2 a, Circle b) => Overlaps(b, a);
+        public static bool Overlaps(in Capsule2 a, in Circle b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Sphere a, Capsule3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Sphere a, in Capsule3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Circle a, Capsule2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Circle a, in Capsule2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -12,60 +12,60 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a sphere and a sphere (3D): negative when overlapping (depth = ra + rb − |ca − cb|); coincident centers push the smaller sphere along +X (the larger along −X), whichever argument it is. Algorithm: |cb − ca| − (ra + rb) (paper Eq. 17); overlap compares squares (paper Eq. 24).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Sphere b)
+        public static DistanceResult3 Between(in Sphere a, in Sphere b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a circle and a circle (2D): negative when overlapping (depth = ra + rb − |ca − cb|); coincident centers push the smaller sphere along +X (the larger along −X), whichever argument it is. Algorithm: |cb − ca| − (ra + rb) (paper Eq. 17); overlap compares squares (paper Eq. 24).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Circle b)
+        public static DistanceResult2 Between(in Circle a, in Circle b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
-        /// <summary>Signed closest distance between a sphere and a sphere (3D) without the witness points: the Distance of <see cref="Between(Sphere, Sphere)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a sphere and a sphere (3D) without the witness points: the Distance of <see cref="Between(in Sphere, in Sphere)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Sphere a, Sphere b)
+        public static double Distance(in Sphere a, in Sphere b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
-        /// <summary>Signed closest distance between a circle and a circle (2D) without the witness points: the Distance of <see cref="Between(Circle, Circle)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a circle and a circle (2D) without the witness points: the Distance of <see cref="Between(in Circle, in Circle)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Circle a, Circle b)
+        public static double Distance(in Circle a, in Circle b)
         {
             var r = DistanceCore(a, b, out bool inRange);
             return inRange ? r : Slow(a, b).Distance;
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Sphere a, Sphere b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Sphere a, in Sphere b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Circle a, Circle b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Circle a, in Circle b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and a sphere (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Sphere b)
+        public static bool Overlaps(in Sphere a, in Sphere b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a circle and a circle (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Circle b)
+        public static bool Overlaps(in Circle a, in Circle b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Sphere a, Sphere b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Sphere a, in Sphere b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Circle a, Circle b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Circle a, in Circle b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -12,70 +12,70 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a sphere and a triangle (3D): negative when the triangle enters the sphere (depth = radius − distance from the center to the triangle); a center on the triangle is pushed along the triangle's normal (B − A) × (C − A) (a degenerate triangle: a direction perpendicular to its edge, +X for a point). Algorithm: point–triangle distance from the center, less the radius (Ericson RTCD §5.2.7).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Triangle3 b)
+        public static DistanceResult3 Between(in Sphere a, in Triangle3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a triangle and a sphere (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Triangle3 a, Sphere b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Triangle3 a, in Sphere b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a circle and a triangle (2D): negative when they overlap (depth = radius − distance from the center, or radius + the center's depth below the nearest edge when it is inside the solid triangle, pushed out through that edge). Algorithm: signed point–triangle distance from the center, less the radius (Ericson RTCD §5.2.7).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Triangle2 b)
+        public static DistanceResult2 Between(in Circle a, in Triangle2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a triangle and a circle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Triangle2 a, Circle b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a sphere and a triangle (3D) without the witness points: the Distance of <see cref="Between(Sphere, Triangle3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Triangle2 a, in Circle b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a sphere and a triangle (3D) without the witness points: the Distance of <see cref="Between(in Sphere, in Triangle3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Sphere a, Triangle3 b) => Between(a, b).Distance;
+        public static double Distance(in Sphere a, in Triangle3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a sphere (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Triangle3 a, Sphere b) => Distance(b, a);
-        /// <summary>Signed closest distance between a circle and a triangle (2D) without the witness points: the Distance of <see cref="Between(Circle, Triangle2)"/>, bit for bit.</summary>
+        public static double Distance(in Triangle3 a, in Sphere b) => Distance(b, a);
+        /// <summary>Signed closest distance between a circle and a triangle (2D) without the witness points: the Distance of <see cref="Between(in Circle, in Triangle2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Circle a, Triangle2 b) => Between(a, b).Distance;
+        public static double Distance(in Circle a, in Triangle2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a circle (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Triangle2 a, Circle b) => Distance(b, a);
+        public static double Distance(in Triangle2 a, in Circle b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Sphere a, Triangle3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Sphere a, in Triangle3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Circle a, Triangle2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Circle a, in Triangle2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and a triangle (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Triangle3 b)
+        public static bool Overlaps(in Sphere a, in Triangle3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a triangle and a sphere (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle3 a, Sphere b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle3 a, in Sphere b) => Overlaps(b, a);
         /// <summary>Whether a circle and a triangle (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Triangle2 b)
+        public static bool Overlaps(in Circle a, in Triangle2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a triangle and a circle (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle2 a, Circle b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle2 a, in Circle b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Sphere a, Triangle3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Sphere a, in Triangle3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Circle a, Triangle2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Circle a, in Triangle2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

@@ -12,70 +12,70 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a triangle and an AABB (3D): negative when the triangle enters the box (minimum translation of the triangle over the 13 separating axes); apart, the first minimum among the triangle's edges AB, BC, CA against the box, then the box's edges against the triangle. Algorithm: separating-axis test in the box frame (Akenine-Möller 2001, triangle–box overlap) with an exactly formed triangle normal; segment–box closed form and segment–triangle distances when apart.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Triangle3 a, Aabb3 b)
+        public static DistanceResult3 Between(in Triangle3 a, in Aabb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an AABB and a triangle (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, Triangle3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Aabb3 a, in Triangle3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a triangle and an AABB (2D): negative when the solid triangle and the box overlap (minimum translation of the triangle over the box's and the triangle's edge normals); apart, the first minimum among the triangle's edges AB, BC, CA against the box. Algorithm: separating-axis test in the box frame (Akenine-Möller 2001, in 2D); segment–box closed form when apart.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Triangle2 a, Aabb2 b)
+        public static DistanceResult2 Between(in Triangle2 a, in Aabb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between an AABB and a triangle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, Triangle2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a triangle and an AABB (3D) without the witness points: the Distance of <see cref="Between(Triangle3, Aabb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Aabb2 a, in Triangle2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a triangle and an AABB (3D) without the witness points: the Distance of <see cref="Between(in Triangle3, in Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Triangle3 a, Aabb3 b) => Between(a, b).Distance;
+        public static double Distance(in Triangle3 a, in Aabb3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an AABB and a triangle (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb3 a, Triangle3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a triangle and an AABB (2D) without the witness points: the Distance of <see cref="Between(Triangle2, Aabb2)"/>, bit for bit.</summary>
+        public static double Distance(in Aabb3 a, in Triangle3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a triangle and an AABB (2D) without the witness points: the Distance of <see cref="Between(in Triangle2, in Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Triangle2 a, Aabb2 b) => Between(a, b).Distance;
+        public static double Distance(in Triangle2 a, in Aabb2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an AABB and a triangle (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Aabb2 a, Triangle2 b) => Distance(b, a);
+        public static double Distance(in Aabb2 a, in Triangle2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Triangle3 a, Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Triangle3 a, in Aabb3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Triangle2 a, Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Triangle2 a, in Aabb2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a triangle and an AABB (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle3 a, Aabb3 b)
+        public static bool Overlaps(in Triangle3 a, in Aabb3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an AABB and a triangle (3D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb3 a, Triangle3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb3 a, in Triangle3 b) => Overlaps(b, a);
         /// <summary>Whether a triangle and an AABB (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle2 a, Aabb2 b)
+        public static bool Overlaps(in Triangle2 a, in Aabb2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether an AABB and a triangle (2D) touch or overlap: Overlaps(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb2 a, Triangle2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb2 a, in Triangle2 b) => Overlaps(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Triangle3 a, Aabb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Triangle3 a, in Aabb3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Triangle2 a, Aabb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Triangle2 a, in Aabb2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 

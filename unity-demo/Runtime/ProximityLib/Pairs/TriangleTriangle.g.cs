@@ -12,52 +12,52 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a triangle and a triangle (3D): never negative (neither is solid); meeting (crossing, coplanar overlapping, touching), 0 with a common point as both witnesses; where the minimum is not unique, the first among the edges AB, BC, CA of the canonically first triangle against the other, then the other's edges, the same in either argument order. Algorithm: the least of the six edge–triangle distances (see the segment–triangle query), which never intersects plane-crossing intervals (where Möller's and Guigue–Devillers' tests fail on coplanar input).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Triangle3 a, Triangle3 b)
+        public static DistanceResult3 Between(in Triangle3 a, in Triangle3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Closest distance between a triangle and a triangle (2D): negative when the solid triangles overlap (minimum translation over the six edge normals); apart, the closest pair over the nine edge pairs; a degenerate triangle is the segment (longest edge) or point it is; the first minimum of the canonically first triangle's edges, the same in either argument order. Algorithm: separating-axis test and depth over the edge normals (Ericson RTCD §4.4; Gottschalk et al. 1996), edge–edge distances (Eberly's robust segment distance).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Triangle2 a, Triangle2 b)
+        public static DistanceResult2 Between(in Triangle2 a, in Triangle2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
-        /// <summary>Signed closest distance between a triangle and a triangle (3D) without the witness points: the Distance of <see cref="Between(Triangle3, Triangle3)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a triangle and a triangle (3D) without the witness points: the Distance of <see cref="Between(in Triangle3, in Triangle3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Triangle3 a, Triangle3 b) => Between(a, b).Distance;
-        /// <summary>Signed closest distance between a triangle and a triangle (2D) without the witness points: the Distance of <see cref="Between(Triangle2, Triangle2)"/>, bit for bit.</summary>
+        public static double Distance(in Triangle3 a, in Triangle3 b) => Between(a, b).Distance;
+        /// <summary>Signed closest distance between a triangle and a triangle (2D) without the witness points: the Distance of <see cref="Between(in Triangle2, in Triangle2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(Triangle2 a, Triangle2 b) => Between(a, b).Distance;
+        public static double Distance(in Triangle2 a, in Triangle2 b) => Between(a, b).Distance;
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(Triangle3 a, Triangle3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Triangle3 a, in Triangle3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(Triangle2 a, Triangle2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Triangle2 a, in Triangle2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a triangle and a triangle (3D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle3 a, Triangle3 b)
+        public static bool Overlaps(in Triangle3 a, in Triangle3 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
         /// <summary>Whether a triangle and a triangle (2D) touch or overlap; agrees with ClosestDistance (Distance ≤ 0) outside the documented tolerance band.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle2 a, Triangle2 b)
+        public static bool Overlaps(in Triangle2 a, in Triangle2 b)
         {
             var r = Core(a, b, out bool inRange);
             return inRange ? r : Slow(a, b);
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Triangle3 a, Triangle3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Triangle3 a, in Triangle3 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Slow(Triangle2 a, Triangle2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
+        private static bool Slow(in Triangle2 a, in Triangle2 b) => Wide.Overlaps(a, b, static (x, y) => Core(x, y, out _));
     }
 }
 
