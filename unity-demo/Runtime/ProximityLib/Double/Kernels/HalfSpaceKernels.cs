@@ -61,9 +61,13 @@ namespace ProximityLib.Double
             var da = a - p;
             var db = b - p;
             double sa = Vector3D.Dot(n, da), sb = Vector3D.Dot(n, db);
-            double d = BallHalfSpaceDistance(sb < sa ? b : a, r, n, p, out inRange);
-            inRange &= Range.Box(Math.Max(Range.MaxAbs(da), Range.MaxAbs(db)));
-            return d;
+            // BallHalfSpaceDistance on the lower end, spelled out on the scalars it would form (its d is da or db, its dot
+            // sa or sb, bit for bit): selecting the end as a vector made a stack copy without dynamic PGO, 2x slower.
+            bool upper = sb < sa;
+            double dist = (upper ? sb : sa) - r;
+            inRange = Range.Box(Math.Max(upper ? Range.MaxAbs(db) : Range.MaxAbs(da), r)) & (dist <= 0 | Range.In(dist * dist))
+                & Range.Box(Math.Max(Range.MaxAbs(da), Range.MaxAbs(db)));
+            return dist;
         }
 
         /// <summary>
