@@ -29,8 +29,9 @@ namespace ProximityLib.Double
             if (!BoxBoxOverlaps(a, b))
             {
                 double gap = BoxesApart(a, default, b, d, 0, out onA, out onB);
-                // A subnormal squared gap has lost bits: the slow path answers it at a scale where it has not.
-                inRange &= gap == 0 || Range.In(gap);
+                // A subnormal squared gap has lost bits, and a zero one is rare here (the boxes are apart) and may have
+                // underflowed: the slow path answers both at a scale where they have not (2^k-scaled inputs agree).
+                inRange &= Range.In(gap);
                 return new DistanceResult3(Math.Sqrt(gap), gap, onA + shift, onB + shift, 0, 0);
             }
             var ca = a.ToWorldOffset(a.LocalCenter);
@@ -45,7 +46,7 @@ namespace ProximityLib.Double
             onB += shift;
             if (depth < 0)
             {
-                inRange &= g == 0 || Range.In(g);
+                inRange &= Range.In(g); // a zero gap of boxes found apart may have underflowed: the slow path
                 return new DistanceResult3(Math.Sqrt(g), g, onA, onB, 0, 0);
             }
             return new DistanceResult3(-depth, 0, onA, onB, 0, 0);
@@ -68,7 +69,7 @@ namespace ProximityLib.Double
                 if (depth >= 0) return -depth;
             }
             double gap = BoxesApart(a, default, b, d, 0, out _, out _);
-            inRange &= gap == 0 || Range.In(gap);
+            inRange &= Range.In(gap); // a zero gap of boxes found apart may have underflowed: the slow path
             return Math.Sqrt(gap);
         }
 

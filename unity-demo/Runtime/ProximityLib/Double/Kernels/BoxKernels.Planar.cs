@@ -23,7 +23,7 @@ namespace ProximityLib.Double
             if (!BoxBoxOverlaps2(a, b))
             {
                 double gap = BoxesApart2(a, default, b, d, out onA, out onB);
-                inRange &= gap == 0 || Range.In(gap);
+                inRange &= Range.In(gap); // a zero gap of boxes found apart may have underflowed: the slow path
                 return new DistanceResult2(Math.Sqrt(gap), gap, onA + shift, onB + shift, 0, 0);
             }
             var ca = a.ToWorldOffset(a.LocalCenter);
@@ -35,7 +35,7 @@ namespace ProximityLib.Double
             onB += shift;
             if (depth < 0)
             {
-                inRange &= g == 0 || Range.In(g);
+                inRange &= Range.In(g); // a zero gap of boxes found apart may have underflowed: the slow path
                 return new DistanceResult2(Math.Sqrt(g), g, onA, onB, 0, 0);
             }
             return new DistanceResult2(-depth, 0, onA, onB, 0, 0);
@@ -58,7 +58,7 @@ namespace ProximityLib.Double
                 if (depth >= 0) return -depth;
             }
             double gap = BoxesApart2(a, default, b, d, out _, out _);
-            inRange &= gap == 0 || Range.In(gap);
+            inRange &= Range.In(gap); // a zero gap of boxes found apart may have underflowed: the slow path
             return Math.Sqrt(gap);
         }
 
