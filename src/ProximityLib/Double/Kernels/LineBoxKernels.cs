@@ -28,8 +28,9 @@ namespace ProximityLib.Double
             if (!LineBoxOverlapsLocal(m, d, h, box.Planar, ray))
             {
                 double g = LineBoxNearest(m, d, h, ray, out t, out e);
-                // A subnormal squared gap has lost bits: the slow path answers it at a scale where it has not.
-                inRange &= g == 0 || Range.In(g);
+                // A subnormal squared gap has lost bits, and a zero one is rare here (found apart) and may have underflowed:
+                // the slow path answers both at a scale where they have not (2^k-scaled inputs agree).
+                inRange &= Range.In(g);
                 return new DistanceResult3(Math.Sqrt(g), g, o + u * t, box.Origin + box.ToWorldOffset(c + Clamp(e, -h, h)), t, 0);
             }
             double depth = Math.Max(0, LineBoxPenetration(m, d, h, box.Planar, ray, out var dir));
@@ -143,7 +144,7 @@ namespace ProximityLib.Double
             if (!SegmentBoxOverlapsLocal(la - c, ld, h, box.Planar))
             {
                 double g = SegmentBoxLocal(la, ld, lo, hi, out t);
-                inRange &= g == 0 || Range.In(g);
+                inRange &= Range.In(g);
                 if (g > 0)
                 {
                     var e = la + ld * t;
@@ -187,7 +188,7 @@ namespace ProximityLib.Double
             var ld = box.ToLocal(b - a);
             if (SegmentBoxOverlapsLocal(la - box.LocalCenter, ld, box.Half, box.Planar)) return true;
             double g = SegmentBoxLocal(la, ld, box.Lo, box.Hi, out _);
-            inRange &= g == 0 || Range.In(g);
+            inRange &= Range.In(g);
             return Math.Sqrt(g) - r <= 0;
         }
     }

@@ -206,8 +206,9 @@ namespace ProximityLib.Double
             if (!TriangleBoxSat(la, lb, lc, box, true, out double depth, out var dir))
             {
                 double g = TriangleBoxApart(la, lb, lc, box.Lo, box.Hi, box.Planar, out pa, out pb);
-                // A subnormal squared gap has lost bits: the slow path answers it at a scale where it has not.
-                inRange &= g == 0 || Range.In(g);
+                // A subnormal squared gap has lost bits, and a zero one is rare here (found apart) and may have underflowed:
+                // the slow path answers both at a scale where they have not (2^k-scaled inputs agree).
+                inRange &= Range.In(g);
                 return new DistanceResult3(Math.Sqrt(g), g, o + box.ToWorldOffset(pa), o + box.ToWorldOffset(pb), 0, 0);
             }
             var push = dir * depth;
