@@ -142,42 +142,18 @@ namespace ProximityMonoCheck
             Pairs(B2, A2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(B2, B2, FC.Between, FC.Distance, FQ.Overlaps);
         }
 
-        private static void Double3()
-        {
-            var p = Array.ConvertAll(P3, x => (D.Vector3D)x);
-            var g = Array.ConvertAll(G3, x => (D.Segment3)x);
-            var s = Array.ConvertAll(S3, x => (D.Sphere)x);
-            var a = Array.ConvertAll(A3, x => (D.Aabb3)x);
-            var b = Array.ConvertAll(B3, x => (D.Obb3)x);
-            DoublePairs(p, p); DoublePairs(p, g); DoublePairs(p, s);
-            DoublePairs(p, a); DoublePairs(p, b);
-            DoublePairs(g, p); DoublePairs(g, g); DoublePairs(g, s);
-            DoublePairs(g, a); DoublePairs(g, b);
-            DoublePairs(s, p); DoublePairs(s, g); DoublePairs(s, s);
-            DoublePairs(s, a); DoublePairs(s, b);
-            DoublePairs(a, p); DoublePairs(a, g); DoublePairs(a, s);
-            DoublePairs(a, a); DoublePairs(a, b);
-            DoublePairs(b, p); DoublePairs(b, g); DoublePairs(b, s);
-            DoublePairs(b, a); DoublePairs(b, b);
-        }
+        private static void Double3() => EveryDoublePair(Array.ConvertAll(P3, x => (D.Vector3D)x), Array.ConvertAll(G3, x => (D.Segment3)x),
+            Array.ConvertAll(S3, x => (D.Sphere)x), Array.ConvertAll(A3, x => (D.Aabb3)x), Array.ConvertAll(B3, x => (D.Obb3)x));
 
-        private static void Double2()
+        private static void Double2() => EveryDoublePair(Array.ConvertAll(P2, x => (D.Vector2D)x), Array.ConvertAll(G2, x => (D.Segment2)x),
+            Array.ConvertAll(C2, x => (D.Circle)x), Array.ConvertAll(A2, x => (D.Aabb2)x), Array.ConvertAll(B2, x => (D.Obb2)x));
+
+        /// <summary><see cref="DoublePairs"/> on every ordered pair of the sample sets, in the order given.</summary>
+        private static void EveryDoublePair(params Array[] sets)
         {
-            var p = Array.ConvertAll(P2, x => (D.Vector2D)x);
-            var g = Array.ConvertAll(G2, x => (D.Segment2)x);
-            var c = Array.ConvertAll(C2, x => (D.Circle)x);
-            var a = Array.ConvertAll(A2, x => (D.Aabb2)x);
-            var b = Array.ConvertAll(B2, x => (D.Obb2)x);
-            DoublePairs(p, p); DoublePairs(p, g); DoublePairs(p, c);
-            DoublePairs(p, a); DoublePairs(p, b);
-            DoublePairs(g, p); DoublePairs(g, g); DoublePairs(g, c);
-            DoublePairs(g, a); DoublePairs(g, b);
-            DoublePairs(c, p); DoublePairs(c, g); DoublePairs(c, c);
-            DoublePairs(c, a); DoublePairs(c, b);
-            DoublePairs(a, p); DoublePairs(a, g); DoublePairs(a, c);
-            DoublePairs(a, a); DoublePairs(a, b);
-            DoublePairs(b, p); DoublePairs(b, g); DoublePairs(b, c);
-            DoublePairs(b, a); DoublePairs(b, b);
+            foreach (var a in sets)
+                foreach (var b in sets)
+                    DoublePairs(a, b);
         }
 
         // ---- The pairs with the shapes of issue 12: every such public overload, found by reflection, on four inputs per
@@ -267,20 +243,21 @@ namespace ProximityMonoCheck
         /// a Func of by-value parameters, so the overloads are found by reflection (the ones the compiler would pick:
         /// the shape types exactly) and invoked.
         /// </summary>
-        private static void DoublePairs<TA, TB>(TA[] a, TB[] b)
+        private static void DoublePairs(Array a, Array b)
         {
+            Type ta = a.GetType().GetElementType()!, tb = b.GetType().GetElementType()!;
             MethodInfo Find(Type owner, string name) => owner.GetMethods(BindingFlags.Public | BindingFlags.Static | BindingFlags.DeclaredOnly)
-                .Single(m => m.Name == name && m.GetParameters() is var ps && ps.Length == 2 && Shape(ps[0]) == typeof(TA) && Shape(ps[1]) == typeof(TB));
+                .Single(m => m.Name == name && m.GetParameters() is var ps && ps.Length == 2 && Shape(ps[0]) == ta && Shape(ps[1]) == tb);
             MethodInfo between = Find(typeof(DC), "Between"), distance = Find(typeof(DC), "Distance"), overlaps = Find(typeof(DQ), "Overlaps");
             Called.Add(Signature(between));
             Called.Add(Signature(distance));
             Called.Add(Signature(overlaps));
-            string kinds = $"({typeof(TA).Name}, {typeof(TB).Name})";
+            string kinds = $"({ta.Name}, {tb.Name})";
             for (int i = 0; i < a.Length; i++)
             {
                 for (int j = 0; j < b.Length; j++)
                 {
-                    var args = new object[] { a[i]!, b[j]! };
+                    var args = new[] { a.GetValue(i)!, b.GetValue(j)! };
                     Line($"Between{kinds} [{i},{j}] {Show(between.Invoke(null, args))}");
                     Line($"Distance{kinds} [{i},{j}] {Show(distance.Invoke(null, args))}");
                     Line($"Overlaps{kinds} [{i},{j}] {Show(overlaps.Invoke(null, args))}");

@@ -133,7 +133,6 @@ namespace ProximityLib.Double
         public static bool SegmentInSphere(Vector3D a, Vector3D b, Vector3D center, double radius, out bool inRange)
         {
             var r = PointSegmentResidual(center, a, b, out _, out double dd);
-            double r2 = r.LengthSquared;
             bool within = WithinRadius(r.LengthSquared, radius, out inRange);
             inRange &= Range.In(dd);
             return within;
