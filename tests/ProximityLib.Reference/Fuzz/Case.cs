@@ -74,10 +74,27 @@ namespace ProximityReference.Fuzz
             return list.ToArray();
         }
 
+        /// <summary>
+        /// The first index of the third index space: exact tiny gaps (<see cref="Generators.TinyGap"/>) for all 110 pairs,
+        /// double only (the float API computes in double, where a float gap's square cannot underflow). A space of its
+        /// own, so adding it changed no case of the other two (replay GapBase + k as SEED:2000000000000+k).
+        /// </summary>
+        public const long GapBase = 2_000_000_000_000;
+
+        /// <summary>Every pair of the gap space: the original pairs, then the new ones.</summary>
+        public static readonly (int Dim, Kind A, Kind B)[] GapPairs = Pairs.Concat(NewPairs).ToArray();
+
         /// <summary>The pair and precision of an index: in the original space index mod 60 picks one of 30 pairs × 2
-        /// precisions; in the new space (index − NewBase) mod 160 one of 80 pairs × 2. Consecutive blocks rotate the generators.</summary>
+        /// precisions; in the new space (index − NewBase) mod 160 one of 80 pairs × 2; in the gap space (index − GapBase)
+        /// mod 110 one of the 110 pairs, double. Consecutive blocks rotate the generators.</summary>
         public static (int Dim, Kind A, Kind B, bool Float, long Round) Slot(long index)
         {
+            if (index >= GapBase)
+            {
+                long g = index - GapBase;
+                var (dg, ag, bg) = GapPairs[(int)(g % GapPairs.Length)];
+                return (dg, ag, bg, false, g / GapPairs.Length);
+            }
             if (index < NewBase)
             {
                 int slot = (int)(index % 60);
@@ -103,9 +120,14 @@ namespace ProximityReference.Fuzz
             var (dim, ka, kb, isFloat, round) = Slot(index);
             if (!Available(dim, ka, kb, isFloat))
                 throw new ArgumentException($"case {seed}:{index} is {dim}D {ka}–{kb} ({(isFloat ? "float" : "double")}), which the library has no public overloads for yet");
+            var rng = Rng.ForCase(seed, index);
+            if (index >= GapBase)
+            {
+                var (ga, gb) = Generators.TinyGap(rng, ka, kb, dim, Precision.Double);
+                return new FuzzCase(seed, index, "tiny-gap", dim, false, ga, gb, rng);
+            }
             var gens = Generators.For(ka, kb);
             int g = gens[(int)(round % gens.Length)];
-            var rng = Rng.ForCase(seed, index);
             var (a, b) = Generators.All[g].Make(rng, ka, kb, dim, isFloat ? Precision.Single : Precision.Double);
             return new FuzzCase(seed, index, Generators.All[g].Name, dim, isFloat, a, b, rng);
         }

@@ -501,6 +501,23 @@ namespace ProximityReference.Fuzz
             if (k == 0) k = kHi > 0 ? 1 : -1;
             if (k < kLo || k > kHi) return;
             _ran.Add("i 2^k scaling");
+            CheckScaledBy(ab, oab, k);
+            // Aimed (double): a second k where the scaled distance's square underflows (a gap below 2^-537) or overflows
+            // while every input stays in range: a zero squared gap there is not touching, an infinite one not far, and a
+            // uniform k lands in these windows a few times in a hundred. Drawn from its own generator, so the cases and
+            // checks of a (seed, index) stay what they were before this check existed.
+            if (_float || !(ab.D > 0) || !Normal(ab.D)) return;
+            var side = new Rng(Rng.Mix((ulong)_c.Seed ^ 0x5CA1EDUL) ^ Rng.Mix((ulong)_c.Index));
+            int e = Math.ILogB(ab.D);
+            int aimed = side.Chance(0.75) ? -538 - e - side.Int(0, 62) : 512 - e + side.Int(0, 60);
+            if (aimed == k || aimed == 0 || aimed < kLo || aimed > kHi) return;
+            _ran.Add("i' aimed 2^k scaling");
+            CheckScaledBy(ab, oab, aimed);
+        }
+
+        /// <summary>(i) every input scaled by 2^k gives every output scaled by 2^k (parameters along a line or ray too), bit for bit.</summary>
+        private void CheckScaledBy(Res ab, bool oab, int k)
+        {
             var sa = _c.A.ScaledBy2(k);
             var sb = _c.B.ScaledBy2(k);
             var a2 = sa.Build();

@@ -16,6 +16,9 @@ namespace ProximityReference.Fuzz
         /// <summary>Cases of the second index space (issue 12's pairs): FuzzCase.NewBase + NewStart, … (0: none).</summary>
         public long NewStart { get; set; }
         public long NewCount { get; set; }
+        /// <summary>Cases of the third index space (exact tiny gaps, every pair in double): FuzzCase.GapBase + GapStart, … (0: none).</summary>
+        public long GapStart { get; set; }
+        public long GapCount { get; set; }
         public int Threads { get; set; } = Environment.ProcessorCount;
         /// <summary>Called every few seconds with a progress line.</summary>
         public Action<string>? Progress { get; set; }
@@ -178,13 +181,16 @@ namespace ProximityReference.Fuzz
             var ranges = new List<string>();
             if (o.Count > 0) ranges.Add($"{o.Start}..{o.Start + o.Count - 1}");
             if (o.NewCount > 0) ranges.Add($"{FuzzCase.NewBase + o.NewStart}..{FuzzCase.NewBase + o.NewStart + o.NewCount - 1}");
+            if (o.GapCount > 0) ranges.Add($"{FuzzCase.GapBase + o.GapStart}..{FuzzCase.GapBase + o.GapStart + o.GapCount - 1}");
             total.Ranges = string.Join(" and ", ranges);
             var clock = Stopwatch.StartNew();
             const int chunk = 60;
-            // Chunks of the original space, then of the new one (chunk k ≥ oldChunks starts at NewBase + NewStart).
+            // Chunks of the original space, then of the new one (chunk k ≥ oldChunks starts at NewBase + NewStart), then
+            // of the gap space (k ≥ newChunks: GapBase + GapStart).
             long oldChunks = (o.Count + chunk - 1) / chunk;
-            long chunks = oldChunks + (o.NewCount + chunk - 1) / chunk, next = -1, done = 0;
-            long all = o.Count + o.NewCount;
+            long newChunks = oldChunks + (o.NewCount + chunk - 1) / chunk;
+            long chunks = newChunks + (o.GapCount + chunk - 1) / chunk, next = -1, done = 0;
+            long all = o.Count + o.NewCount + o.GapCount;
             var gate = new object();
             var lastProgress = clock.Elapsed;
             var workers = Enumerable.Range(0, Math.Max(1, o.Threads)).Select(_ => Task.Factory.StartNew(() =>
@@ -196,11 +202,17 @@ namespace ProximityReference.Fuzz
                     if (k >= chunks) break;
                     long from, to;
                     if (k < oldChunks) { from = o.Start + k * chunk; to = Math.Min(o.Start + o.Count, from + chunk); }
-                    else
+                    else if (k < newChunks)
                     {
                         long first = FuzzCase.NewBase + o.NewStart;
                         from = first + (k - oldChunks) * chunk;
                         to = Math.Min(first + o.NewCount, from + chunk);
+                    }
+                    else
+                    {
+                        long first = FuzzCase.GapBase + o.GapStart;
+                        from = first + (k - newChunks) * chunk;
+                        to = Math.Min(first + o.GapCount, from + chunk);
                     }
                     for (long i = from; i < to; i++)
                     {

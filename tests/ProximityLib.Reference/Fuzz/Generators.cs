@@ -1101,6 +1101,24 @@ namespace ProximityReference.Fuzz
         }
 
         /// <summary>
+        /// Exact tiny gaps (the gap index space, <see cref="FuzzCase.GapBase"/>): an exact contact (grid host, axis normal)
+        /// moved to the origin, the guest built at ±2^-57…2^-120 of the grid along the normal (one case in ten: 0), so its
+        /// contact coordinate holds the offset exactly (0 + offset). The gap is 2^57 or more below the size: the checker's
+        /// aimed 2^k scaling takes it where its square underflows while every shape stays in range, where a kernel that
+        /// takes a zero squared gap for touching answers 0 (and a capsule overlap).
+        /// </summary>
+        public static (Spec, Spec) TinyGap(Rng r, Kind ka, Kind kb, int dim, Precision p)
+        {
+            double s = Math.Pow(2, r.Int(-30, 30)), g = s / 4;
+            bool hostIsA = r.Chance(0.5);
+            var (host, contact, n) = HostContact(r, hostIsA ? ka : kb, dim, s, g, exact: true);
+            host = host.Translated(-contact);
+            var at = n * (r.Chance(0.1) ? 0 : r.Sign() * Math.ScaleB(g, -r.Int(57, 120)));
+            var guest = GuestAt(r, hostIsA ? kb : ka, dim, at, n, s, g, exact: true, parallel: r.Chance(0.6));
+            return Finish(hostIsA ? host : guest, hostIsA ? guest : host, p);
+        }
+
+        /// <summary>
         /// Grazing contacts with a general rotation: lines and rays tangent to spheres and capsules (sides and caps),
         /// through box edges and vertices, planes through box edges and vertices, shapes at triangle vertices and on
         /// triangle planes — apart or overlapping by 10^0…10^−16 of the size, or touching to rounding.

@@ -180,6 +180,53 @@ namespace ProximityTests.Double
                     }
         }
 
+        /// <summary>
+        /// Gaps of 2^-100 of the configuration's size, exact in the inputs (a coordinate offset from 0 or 1), scaled by
+        /// 2^k. At 2^-443 and 2^-470 the gap is a normal number but its square underflows to 0: a kernel that takes a
+        /// zero squared gap for touching answered 0 (capsules: minus the radius, and overlap). The exact answers are
+        /// known by hand: 2^-100·2^k, and for the capsules (axis 3·2^-100 away, radius 2^-100) 2^-99·2^k.
+        /// </summary>
+        [TestCase(0), TestCase(-443), TestCase(-470), TestCase(300)]
+        public void GapsWhoseSquareUnderflowAreNotTouching(int k)
+        {
+            double d = Math.Pow(2, -100), f = Math.Pow(2, k), gap = d * f;
+            Vector3D P(double x, double y, double z) => new Vector3D(x * f, y * f, z * f);
+            Vector2D Q(double x, double y) => new Vector2D(x * f, y * f);
+            var tri = new Triangle3(P(0, 0, 0), P(1, 0, 0), P(0, 1, 0));
+            var seg = new Segment3(P(0.2, 0.2, d), P(0.3, 0.3, 1));
+            var cap = new Capsule3(P(0.2, 0.2, 3 * d), P(0.3, 0.3, 1), gap);
+            var x = new Segment3(P(0, 0, 0), P(1, 0, 0));
+            var parallel = new Segment3(P(0.5, d, 0), P(1.5, d, 0));
+            var capX = new Capsule3(P(0.5, 3 * d, 0), P(1.5, 3 * d, 0), gap);
+            Assert.That(ClosestDistance.Between(seg, tri).Distance, Is.EqualTo(gap), "segment–triangle");
+            Assert.That(ProximityQuery.Overlaps(seg, tri), Is.False, "segment–triangle");
+            Assert.That(ClosestDistance.Between(new Triangle3(P(0.2, 0.2, d), P(0.3, 0.3, 1), P(0.1, 0.5, 1)), tri).Distance, Is.EqualTo(gap), "triangle–triangle");
+            Assert.That(ClosestDistance.Between(new Line3(P(0.2, 0.2, d), new Vector3D(1, 0, 0)), tri).Distance, Is.EqualTo(gap), "line–triangle");
+            Assert.That(ClosestDistance.Between(new Ray3(P(0.2, 0.2, d), new Vector3D(1, 0, 0)), tri).Distance, Is.EqualTo(gap), "ray–triangle");
+            Assert.That(ClosestDistance.Between(cap, tri).Distance, Is.EqualTo(2 * gap), "capsule–triangle");
+            Assert.That(ProximityQuery.Overlaps(cap, tri), Is.False, "capsule–triangle");
+            Assert.That(ClosestDistance.Between(x, parallel).Distance, Is.EqualTo(gap), "parallel segments");
+            Assert.That(ProximityQuery.Overlaps(x, parallel), Is.False, "parallel segments");
+            Assert.That(ClosestDistance.Between(new Line3(P(0.5, d, 0), new Vector3D(1, 0, 0)), x).Distance, Is.EqualTo(gap), "line–segment");
+            Assert.That(ClosestDistance.Between(new Ray3(P(0.5, d, 0), new Vector3D(1, 0, 0)), x).Distance, Is.EqualTo(gap), "ray–segment");
+            Assert.That(ClosestDistance.Between(capX, x).Distance, Is.EqualTo(2 * gap), "capsule–segment");
+            Assert.That(ProximityQuery.Overlaps(capX, x), Is.False, "capsule–segment");
+
+            var tri2 = new Triangle2(Q(0, 0), Q(1, 0), Q(0, 1));
+            var x2 = new Segment2(Q(0, 0), Q(1, 0));
+            var below = new Segment2(Q(0.2, -d), Q(0.8, -1));
+            Assert.That(ClosestDistance.Between(below, tri2).Distance, Is.EqualTo(gap), "2D segment–triangle");
+            Assert.That(ProximityQuery.Overlaps(below, tri2), Is.False, "2D segment–triangle");
+            Assert.That(ClosestDistance.Between(new Capsule2(Q(0.2, -3 * d), Q(0.8, -1), gap), tri2).Distance, Is.EqualTo(2 * gap), "2D capsule–triangle");
+            Assert.That(ProximityQuery.Overlaps(new Capsule2(Q(0.2, -3 * d), Q(0.8, -1), gap), tri2), Is.False, "2D capsule–triangle");
+            var flat = new Triangle2(Q(0, 0), Q(1, 0), Q(2, 0));
+            var up = new Segment2(Q(0.5, d), Q(0.5, 1));
+            Assert.That(ClosestDistance.Between(up, flat).Distance, Is.EqualTo(gap), "2D segment–flat triangle");
+            Assert.That(ProximityQuery.Overlaps(up, flat), Is.False, "2D segment–flat triangle");
+            Assert.That(ClosestDistance.Between(x2, new Segment2(Q(0.5, d), Q(1.5, d))).Distance, Is.EqualTo(gap), "2D parallel segments");
+            Assert.That(ProximityQuery.Overlaps(x2, new Segment2(Q(0.5, d), Q(1.5, d))), Is.False, "2D parallel segments");
+        }
+
         private static readonly int[] Kinds = { 0, 1, 2, 3, 4 };
 
         private static void CheckPair(object a, object b)

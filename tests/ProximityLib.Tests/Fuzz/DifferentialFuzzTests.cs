@@ -8,9 +8,10 @@ namespace ProximityTests.Fuzz
     /// The seeded differential fuzz (tests/ProximityLib.Reference/Fuzz) at CI size: every generator, every kind pair in
     /// both dimensions and precisions (all 200 public Between/Overlaps overloads, both argument orders), and the SIMD
     /// batch queries, against the invariants and, on a sample, the exact reference; and issue 12's pairs (lines, rays,
-    /// capsules, triangles, half-spaces) in their own index space, each pair from the commit whose overloads add it.
-    /// About two minutes in Release on two cores. PROXIMITY_FUZZ_SEED, PROXIMITY_FUZZ_CASES and PROXIMITY_FUZZ_NEW_CASES
-    /// override the seed and the numbers of cases; the long mode is
+    /// capsules, triangles, half-spaces) in their own index space, each pair from the commit whose overloads add it; and
+    /// exact tiny gaps for all 110 pairs in double (a third space), scaled to where their squares underflow.
+    /// About a minute in Release on two cores. PROXIMITY_FUZZ_SEED, PROXIMITY_FUZZ_CASES, PROXIMITY_FUZZ_NEW_CASES and
+    /// PROXIMITY_FUZZ_GAP_CASES override the seed and the numbers of cases; the long mode is
     /// <c>dotnet run --project tests/ProximityLib.Accuracy -c Release -- --fuzz 2000000 --seed N</c>.
     /// </summary>
     [TestFixture, Category("Fuzz")]
@@ -21,6 +22,8 @@ namespace ProximityTests.Fuzz
         public const long DefaultCases = 120_000;
         /// <summary>A multiple of 160: every block of 160 consecutive new-space cases covers all 80 new pairs in both precisions.</summary>
         public const long DefaultNewCases = 64_000;
+        /// <summary>A multiple of 110: every block of 110 consecutive gap-space cases covers all 110 pairs.</summary>
+        public const long DefaultGapCases = 22_000;
 
         private static long Setting(string name, long fallback)
         {
@@ -36,7 +39,8 @@ namespace ProximityTests.Fuzz
             long seed = Setting("PROXIMITY_FUZZ_SEED", DefaultSeed);
             long cases = Setting("PROXIMITY_FUZZ_CASES", DefaultCases);
             long newCases = Setting("PROXIMITY_FUZZ_NEW_CASES", DefaultNewCases);
-            var report = Engine.Run(new FuzzOptions { Seed = seed, Count = cases, NewCount = newCases, Threads = Environment.ProcessorCount });
+            long gapCases = Setting("PROXIMITY_FUZZ_GAP_CASES", DefaultGapCases);
+            var report = Engine.Run(new FuzzOptions { Seed = seed, Count = cases, NewCount = newCases, GapCount = gapCases, Threads = Environment.ProcessorCount });
             string text = report.Format(repros: 20, rows: 120);
             TestContext.Progress.WriteLine($"Fuzz: {report.Cases} cases (seed {seed}; {report.Skipped} skipped: pairs not in the library yet) in " +
                                            $"{report.Elapsed.TotalSeconds:F1} s, {report.FailureCount} violations in {report.FailedCases} cases");
@@ -49,11 +53,20 @@ namespace ProximityTests.Fuzz
         /// sphere touching a rotated OBB) and 11:1579269 (E 4.02, sphere–sphere with the centres 1.5·S apart) broke the
         /// bound of 4 once promised for those pairs (docs/design.md, Error bounds); 108:818174 (touching 3D OBBs scaled by
         /// 2^-443: the squared gap, 1e-324, underflowed to an exact-looking 0 and the fast path kept it, Distance 0 where
-        /// the scaled answer 1.1e-162 is normal).
+        /// the scaled answer 1.1e-162 is normal). From the gap space (exact tiny gaps), the first cases the fuzz found when it
+        /// was added, each a gap whose square underflowed at a scale inside the fast range and was taken for touching (or, for
+        /// triangles overlapping by a tiny depth, picked the wrong just-touching pair): 111:2000000000044 (line–triangle),
+        /// 111:2000000000075 (2D segment–line), 111:2000000000173 (triangle–triangle), 111:2000000001093 (2D
+        /// triangle–triangle witnesses), 111:2000000020079 (capsule–triangle).
         /// </summary>
         [TestCase(11, 280751)]
         [TestCase(11, 1579269)]
         [TestCase(108, 818174)]
+        [TestCase(111, 2000000000044)]
+        [TestCase(111, 2000000000075)]
+        [TestCase(111, 2000000000173)]
+        [TestCase(111, 2000000001093)]
+        [TestCase(111, 2000000020079)]
         public void CasesTheLongModeFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = Checker.Run(FuzzCase.Create(seed, index), exact: true);

@@ -132,6 +132,24 @@ namespace ProximityTests.Fuzz
         }
 
         [Test]
+        public void TheGapSpaceCoversEveryPairInDouble()
+        {
+            Assert.That(FuzzCase.GapBase, Is.GreaterThan(FuzzCase.NewBase + 1_000_000_000));
+            var seen = new System.Collections.Generic.HashSet<(int, Kind, Kind)>();
+            for (long i = 0; i < 110; i++)
+            {
+                var (dim, a, b, isFloat, round) = FuzzCase.Slot(FuzzCase.GapBase + i);
+                Assert.That(isFloat, Is.False);
+                Assert.That(round, Is.EqualTo(0));
+                seen.Add((dim, a, b));
+            }
+            Assert.That(seen.Count, Is.EqualTo(110));
+            var c = FuzzCase.Create(7, FuzzCase.GapBase + 5);
+            Assert.That(c.Generator, Is.EqualTo("tiny-gap"));
+            Assert.That(c.Float, Is.False);
+        }
+
+        [Test]
         public void NewSpecsRebuildThroughTheirConstructorsAndScaleAndTranslate()
         {
             var off = Spec.HalfSpaceOffset(3, new Vector3D(0, 0, 2), 3);

@@ -8,7 +8,7 @@ namespace ProximityLib.Double
         // ---- Triangle against triangle ----
 
         /// <summary>
-        /// Two 3D triangles (neither solid): the least of the six edge–triangle distances (<see cref="SegmentTriangle(Vector3D, Vector3D, in TriFrame, out double, out Vector3D, out Vector3D)"/>),
+        /// Two 3D triangles (neither solid): the least of the six edge–triangle distances (<see cref="SegmentTriangle(Vector3D, Vector3D, in TriFrame, out double, out Vector3D, out Vector3D, out bool)"/>),
         /// A's edges first, the first of equal ones. Two triangles meet exactly when an edge of one meets the other (the
         /// intersection of two convex sets in a plane or across planes reaches a boundary of one of them), so 0 comes with a
         /// common point; no plane-crossing interval is intersected, which is where the classic tests fail on coplanar input.
@@ -26,20 +26,21 @@ namespace ProximityLib.Double
             var fa = new TriFrame(a0, a1, a2, k);
             var fb = new TriFrame(b0, b1, b2, k);
             double best = double.PositiveInfinity;
+            bool fine = true;
             Vector3D pa = a0, pb = b0;
             for (int i = 0; i < 3 && best > 0; i++)
             {
                 fa.Edge(i, out var v0, out var v1);
-                double g = SegmentTriangle(v0, v1, fb, out _, out var x, out var q);
-                if (g < best) { best = g; pa = x; pb = q; }
+                double g = SegmentTriangle(v0, v1, fb, out _, out var x, out var q, out bool fineEdge);
+                if (g < best) { best = g; pa = x; pb = q; fine = fineEdge; }
             }
             for (int i = 0; i < 3 && best > 0; i++)
             {
                 fb.Edge(i, out var v0, out var v1);
-                double g = SegmentTriangle(v0, v1, fa, out _, out var x, out var q);
-                if (g < best) { best = g; pa = q; pb = x; }
+                double g = SegmentTriangle(v0, v1, fa, out _, out var x, out var q, out bool fineEdge);
+                if (g < best) { best = g; pa = q; pb = x; fine = fineEdge; }
             }
-            inRange = (Range.In(size2) | (a0 == a1 & a0 == a2 & a0 == b0 & a0 == b1 & a0 == b2)) & (best == 0 | Range.In(best));
+            inRange = (Range.In(size2) | (a0 == a1 & a0 == a2 & a0 == b0 & a0 == b1 & a0 == b2)) & fine;
             return new DistanceResult3(Math.Sqrt(best), best, pa + o, pb + o, 0, 0);
         }
 
@@ -48,7 +49,7 @@ namespace ProximityLib.Double
         /// normals of the Minkowski difference; strict, a zero axis separates nothing); apart, the least of the nine
         /// edge–edge distances (the closest pair of disjoint convex polygons has a vertex on one side); overlapping, the
         /// least push over the six axes, and the witnesses of A moved by it, just touching, moved back. A flat triangle is
-        /// the segment (its longest edge) or point it is: against a solid one, <see cref="SegmentTriangle2(Vector3D, Vector3D, in TriFrame, bool, out double, out Vector3D, out Vector3D, out Vector3D)"/>;
+        /// the segment (its longest edge) or point it is: against a solid one, <see cref="SegmentTriangle2(Vector3D, Vector3D, in TriFrame, bool, out double, out Vector3D, out Vector3D, out Vector3D, out bool)"/>;
         /// two flat ones, the nine edge–edge distances (never negative).
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
@@ -61,31 +62,32 @@ namespace ProximityLib.Double
             bool sized = Range.In(size2) | (a0 == a1 & a0 == a2 & a0 == b0 & a0 == b1 & a0 == b2);
             double areaA = Area2(fa), areaB = Area2(fb);
             double sd;
+            bool fine = true;
             Vector3D pa, pb;
             if (areaA == 0 && areaB != 0)
             {
                 LongestEdge(fa, out var v0, out var v1);
-                sd = SegmentTriangle2(v0, v1, fb, false, out _, out pa, out pb, out _);
+                sd = SegmentTriangle2(v0, v1, fb, false, out _, out pa, out pb, out _, out fine);
             }
             else if (areaB == 0 && areaA != 0)
             {
                 LongestEdge(fb, out var v0, out var v1);
-                sd = SegmentTriangle2(v0, v1, fa, false, out _, out pb, out pa, out _);
+                sd = SegmentTriangle2(v0, v1, fa, false, out _, out pb, out pa, out _, out fine);
             }
             else if (areaA == 0 || !TriangleTriangleSat2(fa, fb, false, out _, out _))
             {
-                double g = EdgePairs(fa, fb, default, out pa, out pb);
+                double g = EdgePairs(fa, fb, default, out pa, out pb, out fine);
                 sd = Math.Sqrt(g);
             }
             else
             {
                 TriangleTriangleSat2(fa, fb, true, out double depth, out var dir);
                 var push = dir * depth;
-                EdgePairs(fa, fb, push, out pa, out pb);
+                EdgePairs(fa, fb, push, out pa, out pb, out fine); // a just-touching gap whose square underflowed may pick the wrong pair
                 pa -= push;
                 sd = depth > 0 ? -depth : 0;
             }
-            inRange = sized & (sd <= 0 | Range.In(sd * sd));
+            inRange = sized & fine;
             return new DistanceResult3(sd, sd > 0 ? sd * sd : 0, pa, pb, 0, 0);
         }
 
@@ -109,8 +111,10 @@ namespace ProximityLib.Double
                 LongestEdge(fb, out var v0, out var v1);
                 return SegmentTriangleOverlaps2(v0, v1, fa);
             }
-            if (areaA == 0) return EdgePairs(fa, fb, default, out _, out _) == 0;
-            return TriangleTriangleSat2(fa, fb, false, out _, out _);
+            if (areaA != 0) return TriangleTriangleSat2(fa, fb, false, out _, out _);
+            bool met = EdgePairs(fa, fb, default, out _, out _, out bool fine) == 0;
+            inRange &= fine;
+            return met;
         }
 
         /// <summary>
@@ -149,12 +153,13 @@ namespace ProximityLib.Double
             max = Math.Max(p0, Math.Max(p1, p2));
         }
 
-        /// <summary>The least squared distance over the nine pairs of an edge of A (moved by <paramref name="shift"/>) and an edge of B (A's edges outer, the first of equal ones).</summary>
+        /// <summary>The least squared distance over the nine pairs of an edge of A (moved by <paramref name="shift"/>) and an edge of B (A's edges outer, the first of equal ones); <paramref name="fine"/>: that pair's own range check (in range or an exact 0).</summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static double EdgePairs(in TriFrame fa, in TriFrame fb, Vector3D shift, out Vector3D pa, out Vector3D pb)
+        private static double EdgePairs(in TriFrame fa, in TriFrame fb, Vector3D shift, out Vector3D pa, out Vector3D pb, out bool fine)
         {
             double best = double.PositiveInfinity;
             pa = fa.A; pb = fb.A;
+            fine = true;
             for (int i = 0; i < 3; i++)
             {
                 fa.Edge(i, out var a0, out var a1);
@@ -163,8 +168,8 @@ namespace ProximityLib.Double
                 for (int j = 0; j < 3; j++)
                 {
                     fb.Edge(j, out var b0, out var b1);
-                    double g = SegmentSegmentCore(a0, a1, b0, b1, out double s, out double t, out _);
-                    if (g < best) { best = g; pa = SegmentPoint(a0, a1, s); pb = SegmentPoint(b0, b1, t); }
+                    double g = SegmentSegmentCore(a0, a1, b0, b1, out double s, out double t, out bool fineEdge);
+                    if (g < best) { best = g; pa = SegmentPoint(a0, a1, s); pb = SegmentPoint(b0, b1, t); fine = fineEdge; }
                 }
             }
             return best;
@@ -311,7 +316,7 @@ namespace ProximityLib.Double
                     if ((corner & (1 << i)) != 0) continue;
                     var e0 = Corner(lo, hi, corner);
                     var e1 = Corner(lo, hi, corner | (1 << i));
-                    double g = SegmentTriangle(e0, e1, f, out _, out var x, out var q);
+                    double g = SegmentTriangle(e0, e1, f, out _, out var x, out var q, out _);
                     if (g < best) { best = g; pa = q; pb = x; }
                 }
             }

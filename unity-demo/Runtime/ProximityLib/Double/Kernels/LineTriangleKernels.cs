@@ -78,7 +78,7 @@ namespace ProximityLib.Double
         /// segment–triangle kernel answers on the stretch itself (widened, an end could pull a witness off the minimum by
         /// the margin where the distance is flat to rounding). Apart: the closest pair, PointA = o + t·u; meeting: 0 with
         /// that point as both witnesses. <paramref name="inRange"/>: the configuration's squared size (relative to a) and
-        /// the squared distance are in the fast range (or exactly 0).
+        /// the squared distance are in the fast range (or an exact 0: a crossing, or see <see cref="SegmentTriangle(Vector3D, Vector3D, in TriFrame, out double, out Vector3D, out Vector3D, out bool)"/>).
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
         public static DistanceResult3 LinearTriangle(Vector3D o, Vector3D u, bool ray, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
@@ -90,6 +90,7 @@ namespace ProximityLib.Double
             var w1 = oa + u * whi;
             var f = StretchFrame(eb, ec, w0, w1, 0, out bool sized);
             double g, t;
+            bool fine = true;
             Vector3D onTri;
             if (Crossing(w0, w1, f, out double s, out _))
             {
@@ -99,10 +100,10 @@ namespace ProximityLib.Double
             }
             else
             {
-                g = SegmentTriangle(oa + u * lo, oa + u * hi, f, out s, out _, out onTri);
+                g = SegmentTriangle(oa + u * lo, oa + u * hi, f, out s, out _, out onTri, out fine);
                 t = StretchParameter(lo, hi, s);
             }
-            inRange = sized & (g == 0 | Range.In(g));
+            inRange = sized & fine;
             var pa = o + u * t;
             return new DistanceResult3(Math.Sqrt(g), g, pa, g == 0 ? pa : onTri + a, t, 0);
         }
@@ -120,8 +121,8 @@ namespace ProximityLib.Double
         public static DistanceResult3 LinearTriangle2(Vector3D o, Vector3D u, bool ray, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
         {
             var f = SolidStretch(o, u, ray, a, b, c, out double lo, out double hi, out var p0, out var p1, out bool sized);
-            double sd = SegmentTriangle2(p0, p1, f, Area2(f, a, b, c), false, out double s, out _, out var onTri, out _);
-            inRange = sized & (sd <= 0 | Range.In(sd * sd));
+            double sd = SegmentTriangle2(p0, p1, f, Area2(f, a, b, c), false, out double s, out _, out var onTri, out _, out bool fine);
+            inRange = sized & fine;
             double t = StretchParameter(lo, hi, s);
             var pa = o + u * t;
             return new DistanceResult3(sd, sd > 0 ? sd * sd : 0, pa, sd == 0 ? pa : onTri + a, t, 0);
@@ -131,7 +132,10 @@ namespace ProximityLib.Double
         public static bool LinearTriangleOverlaps2(Vector3D o, Vector3D u, bool ray, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
         {
             var f = SolidStretch(o, u, ray, a, b, c, out _, out _, out var p0, out var p1, out inRange);
-            return Area2(f, a, b, c) != 0 ? SegmentTriangleOverlaps2(p0, p1, f) : EdgesDistance(p0, p1, f, out _, out _, out _) == 0;
+            if (Area2(f, a, b, c) != 0) return SegmentTriangleOverlaps2(p0, p1, f);
+            bool met = EdgesDistance(p0, p1, f, out _, out _, out _, out bool fine) == 0;
+            inRange &= fine;
+            return met;
         }
     }
 }

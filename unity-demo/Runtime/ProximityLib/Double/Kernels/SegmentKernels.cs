@@ -109,8 +109,8 @@ namespace ProximityLib.Double
                 return new Closest(r2, s, t, inRange);
             }
             bool hasInterior = nn > 0;
-            double best = NearlyParallel(a0, a1, b0, b1, d0, d1, w, hasInterior, hasInterior ? sNum / nn : 0, hasInterior ? tNum / nn : 0, out s, out t);
-            return new Closest(best, s, t, sized && (best == 0 || Range.In(best)));
+            double best = NearlyParallel(a0, a1, b0, b1, d0, d1, w, hasInterior, hasInterior ? sNum / nn : 0, hasInterior ? tNum / nn : 0, out s, out t, out var r);
+            return new Closest(best, s, t, sized && Range.Length2(r, best));
         }
 
         /// <summary>
@@ -139,34 +139,37 @@ namespace ProximityLib.Double
         /// starts from (origin a0 or b0, from the differences d0, d1, w), so no intermediate point is rounded at the
         /// scale of the position and the mirror image is the swapped call's own candidate, bit for bit. Candidates are
         /// compared in mirror-image pairs, ties going to the canonically first segment's side. Kept out of line: rare,
-        /// and the common path stays small.
+        /// and the common path stays small. <paramref name="r"/>: the winner's residual, so a zero squared distance is
+        /// trusted only when it is exact (parallel segments 2^-100 of their length apart, scaled by 2^-443, square to 0).
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static double NearlyParallel(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, Vector3D d0, Vector3D d1, Vector3D w,
-            bool hasInterior, double si, double ti, out double s, out double t)
+            bool hasInterior, double si, double ti, out double s, out double t, out Vector3D r)
         {
             double best = double.PositiveInfinity;
             s = 0; t = 0;
+            r = default;
             var zero = default(Vector3D);
             var v = -w; // B's frame: A = v + [0, 1]·d0
-            double tc, sc, r2A, r2B;
+            double tc, sc;
+            Vector3D rA, rB;
             if (hasInterior)
             {
                 Residual(SegmentPoint(zero, d0, Num.Clamp(si, 0, 1)), w, d1, out double ta);
-                r2A = Residual(w + SegmentPoint(zero, d1, ta), zero, d0, out double sa).LengthSquared;
+                rA = Residual(w + SegmentPoint(zero, d1, ta), zero, d0, out double sa);
                 Residual(SegmentPoint(zero, d1, Num.Clamp(ti, 0, 1)), v, d0, out double sb);
-                r2B = Residual(v + SegmentPoint(zero, d0, sb), zero, d1, out double tb).LengthSquared;
-                if (Pick(r2A, r2B, a0, a1, b0, b1)) { best = r2A; s = sa; t = ta; }
-                else { best = r2B; s = sb; t = tb; }
+                rB = Residual(v + SegmentPoint(zero, d0, sb), zero, d1, out double tb);
+                if (Pick(rA.LengthSquared, rB.LengthSquared, a0, a1, b0, b1)) { best = rA.LengthSquared; r = rA; s = sa; t = ta; }
+                else { best = rB.LengthSquared; r = rB; s = sb; t = tb; }
             }
-            r2A = Residual(zero, w, d1, out tc).LengthSquared;
-            r2B = Residual(zero, v, d0, out sc).LengthSquared;
-            if (Pick(r2A, r2B, a0, a1, b0, b1)) { if (r2A < best) { best = r2A; s = 0; t = tc; } }
-            else if (r2B < best) { best = r2B; s = sc; t = 0; }
-            r2A = Residual(d0, w, d1, out tc).LengthSquared;
-            r2B = Residual(d1, v, d0, out sc).LengthSquared;
-            if (Pick(r2A, r2B, a0, a1, b0, b1)) { if (r2A < best) { best = r2A; s = 1; t = tc; } }
-            else if (r2B < best) { best = r2B; s = sc; t = 1; }
+            rA = Residual(zero, w, d1, out tc);
+            rB = Residual(zero, v, d0, out sc);
+            if (Pick(rA.LengthSquared, rB.LengthSquared, a0, a1, b0, b1)) { if (rA.LengthSquared < best) { best = rA.LengthSquared; r = rA; s = 0; t = tc; } }
+            else if (rB.LengthSquared < best) { best = rB.LengthSquared; r = rB; s = sc; t = 0; }
+            rA = Residual(d0, w, d1, out tc);
+            rB = Residual(d1, v, d0, out sc);
+            if (Pick(rA.LengthSquared, rB.LengthSquared, a0, a1, b0, b1)) { if (rA.LengthSquared < best) { best = rA.LengthSquared; r = rA; s = 1; t = tc; } }
+            else if (rB.LengthSquared < best) { best = rB.LengthSquared; r = rB; s = sc; t = 1; }
             return best;
         }
 

@@ -283,21 +283,24 @@ namespace ProximityLib.Double
         /// triangle: 0 there. Otherwise the least of the endpoints against the triangle and the segment against the three
         /// edges (every other closest pair has one of these forms), the first of equal ones in that order; a segment in
         /// the plane, parallel to it or nearly so, is one of these cases too, so no ill-conditioned crossing is trusted.
+        /// <paramref name="fine"/>: the winning candidate's own check, its squared distance in the fast range or exactly 0
+        /// (a crossing, a zero residual). A zero is not trusted by its value: a gap below 2^-537 squares to 0, and at a
+        /// configuration scaled by 2^-443 that is a gap of 2^-100 of its size (fuzz: touching triangles scaled down).
         /// </summary>
-        public static double SegmentTriangle(Vector3D p0, Vector3D p1, in TriFrame f, out double s, out Vector3D onSeg, out Vector3D onTri)
+        public static double SegmentTriangle(Vector3D p0, Vector3D p1, in TriFrame f, out double s, out Vector3D onSeg, out Vector3D onTri, out bool fine)
         {
-            if (Crossing(p0, p1, f, out s, out onSeg)) { onTri = onSeg; return 0; }
-            var c = PointTriangle(p0, f, out _);
+            if (Crossing(p0, p1, f, out s, out onSeg)) { onTri = onSeg; fine = true; return 0; }
+            var c = PointTriangle(p0, f, out fine);
             double best = c.DistanceSquared;
             s = 0; onSeg = p0; onTri = c.Closest;
             if (best == 0) return 0;
-            c = PointTriangle(p1, f, out _);
-            if (c.DistanceSquared < best) { best = c.DistanceSquared; s = 1; onSeg = p1; onTri = c.Closest; }
+            c = PointTriangle(p1, f, out bool fineEnd);
+            if (c.DistanceSquared < best) { best = c.DistanceSquared; s = 1; onSeg = p1; onTri = c.Closest; fine = fineEnd; }
             for (int i = 0; i < 3 && best > 0; i++)
             {
                 f.Edge(i, out var v0, out var v1);
-                double g = SegmentSegmentCore(p0, p1, v0, v1, out double se, out double te, out _);
-                if (g < best) { best = g; s = se + 0; onSeg = SegmentPoint(p0, p1, se); onTri = SegmentPoint(v0, v1, te); }
+                double g = SegmentSegmentCore(p0, p1, v0, v1, out double se, out double te, out bool fineEdge);
+                if (g < best) { best = g; s = se + 0; onSeg = SegmentPoint(p0, p1, se); onTri = SegmentPoint(v0, v1, te); fine = fineEdge; }
             }
             return best;
         }
@@ -323,7 +326,7 @@ namespace ProximityLib.Double
             return false;
         }
 
-        /// <summary>Segment against a 3D triangle as a result; <paramref name="inRange"/>: the configuration's squared size and the squared distance are in the fast range (or exactly 0).</summary>
+        /// <summary>Segment against a 3D triangle as a result; <paramref name="inRange"/>: the configuration's squared size and the squared distance are in the fast range (or an exact 0).</summary>
         public static DistanceResult3 SegmentTriangle(Vector3D p0, Vector3D p1, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
         {
             // In the frame of a, so a translation adds no error (see TriangleTriangle).
@@ -331,8 +334,8 @@ namespace ProximityLib.Double
             a = default; b -= o; c -= o; p0 -= o; p1 -= o;
             double size2 = TriFrame.Size2(a, b, c, p0, p1);
             var f = new TriFrame(a, b, c, InverseSizeScale(size2));
-            double g = SegmentTriangle(p0, p1, f, out double s, out var onSeg, out var onTri);
-            inRange = (Range.In(size2) | (a == b & a == c & a == p0 & a == p1)) & (g == 0 | Range.In(g));
+            double g = SegmentTriangle(p0, p1, f, out double s, out var onSeg, out var onTri, out bool fine);
+            inRange = (Range.In(size2) | (a == b & a == c & a == p0 & a == p1)) & fine;
             return new DistanceResult3(Math.Sqrt(g), g, onSeg + o, onTri + o, s, 0);
         }
 
@@ -441,8 +444,8 @@ namespace ProximityLib.Double
             a = default; b -= o; c -= o; p0 -= o; p1 -= o;
             double size2 = TriFrame.Size2(a, b, c, p0, p1);
             var f = new TriFrame(a, b, c, InverseSizeScale(size2));
-            double g = SegmentTriangle(p0, p1, f, out double s, out var onSeg, out var onTri);
-            inRange = (Range.In(size2) | (a == b & a == c & a == p0 & a == p1)) & (g == 0 | Range.In(g));
+            double g = SegmentTriangle(p0, p1, f, out double s, out var onSeg, out var onTri, out bool fine);
+            inRange = (Range.In(size2) | (a == b & a == c & a == p0 & a == p1)) & fine;
             if (g > 0)
             {
                 double dist = Math.Sqrt(g);
@@ -453,7 +456,8 @@ namespace ProximityLib.Double
             double depth = SegmentTrianglePenetration(p0, p1, f, out var dir);
             if (dir == default) dir = f.Flat ? FlatPushDirection(p1 - p0, f) : f.Unit;
             var push = dir * depth;
-            SegmentTriangle(p0 + push, p1 + push, f, out s, out onSeg, out onTri);
+            SegmentTriangle(p0 + push, p1 + push, f, out s, out onSeg, out onTri, out bool fineTouch);
+            inRange &= fineTouch; // the just-touching pair's gap is rounding, whose square can underflow at the smallest fast scales
             return Inflated(-depth, onSeg - push + o, onTri + o, dir, s, radius);
         }
 
@@ -553,28 +557,33 @@ namespace ProximityLib.Double
         /// witnesses come from the segment moved by it, just touching. Apart: the segment against the three edges.
         /// A flat triangle is the segment or point it is: never negative unless <paramref name="flatDepth"/> (a capsule's axis,
         /// whose crossing of a segment has a 2D depth), then the same axes measure that crossing.
+        /// <paramref name="fine"/>: the squared distance of the closest edge pair (apart) or of the just-touching pair that gives
+        /// the witnesses (overlapping) is in the fast range or an exact 0 (see
+        /// <see cref="SegmentTriangle(Vector3D, Vector3D, in TriFrame, out double, out Vector3D, out Vector3D, out bool)"/>):
+        /// a square that underflowed may have picked the wrong pair.
         /// </summary>
-        private static double SegmentTriangle2(Vector3D p0, Vector3D p1, in TriFrame f, bool flatDepth, out double s, out Vector3D onSeg, out Vector3D onTri, out Vector3D dir) =>
-            SegmentTriangle2(p0, p1, f, Area2(f), flatDepth, out s, out onSeg, out onTri, out dir);
+        private static double SegmentTriangle2(Vector3D p0, Vector3D p1, in TriFrame f, bool flatDepth, out double s, out Vector3D onSeg, out Vector3D onTri, out Vector3D dir, out bool fine) =>
+            SegmentTriangle2(p0, p1, f, Area2(f), flatDepth, out s, out onSeg, out onTri, out dir, out fine);
 
         /// <summary>As above, with the triangle's orientation <paramref name="area"/> given (only whether it is 0 matters).</summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static double SegmentTriangle2(Vector3D p0, Vector3D p1, in TriFrame f, double area, bool flatDepth, out double s, out Vector3D onSeg, out Vector3D onTri, out Vector3D dir)
+        private static double SegmentTriangle2(Vector3D p0, Vector3D p1, in TriFrame f, double area, bool flatDepth, out double s, out Vector3D onSeg, out Vector3D onTri, out Vector3D dir, out bool fine)
         {
             double g = 0;
             s = 0; onSeg = p0; onTri = f.A;
+            fine = true;
             bool apart;
             if (area != 0)
             {
                 apart = !SegmentTriangleOverlaps2(p0, p1, f);
-                if (apart) g = EdgesDistance(p0, p1, f, out s, out onSeg, out onTri);
+                if (apart) g = EdgesDistance(p0, p1, f, out s, out onSeg, out onTri, out fine);
             }
             else
             {
                 // Flat: the segment it is. Meeting it has a depth (and a push direction from the axes below) only for a
                 // capsule's axis: touching (an exact 0) or properly crossing (exact signs: the rounded distance of two
                 // crossing segments is rounding noise, not 0).
-                g = EdgesDistance(p0, p1, f, out s, out onSeg, out onTri);
+                g = EdgesDistance(p0, p1, f, out s, out onSeg, out onTri, out fine);
                 apart = !flatDepth || (g > 0 && !CrossesFlat2(p0, p1, f));
             }
             if (apart)
@@ -599,7 +608,8 @@ namespace ProximityLib.Double
             double depth = best < double.PositiveInfinity ? Math.Max(0, best) / f.K : 0;
             if (dir == default) dir = AnyPerpendicular(Range.MaxAbs(p1 - p0) > 0 ? p1 - p0 : Longest(f));
             var push = dir * depth;
-            EdgesDistance(p0 + push, p1 + push, f, out s, out onSeg, out onTri);
+            // The just-touching pair's gap is rounding, whose square can be subnormal at the smallest fast scales.
+            EdgesDistance(p0 + push, p1 + push, f, out s, out onSeg, out onTri, out fine);
             onSeg -= push;
             return depth > 0 ? -depth : 0;
         }
@@ -650,7 +660,7 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Vector3D Perp(Vector3D e) => new Vector3D(e.Y, -e.X, 0);
 
-        /// <summary>The separating-axis test of a segment against a solid, non-flat 2D triangle (see <see cref="SegmentTriangle2(Vector3D, Vector3D, in TriFrame, bool, out double, out Vector3D, out Vector3D, out Vector3D)"/>).</summary>
+        /// <summary>The separating-axis test of a segment against a solid, non-flat 2D triangle (see <see cref="SegmentTriangle2(Vector3D, Vector3D, in TriFrame, bool, out double, out Vector3D, out Vector3D, out Vector3D, out bool)"/>).</summary>
         private static bool SegmentTriangleOverlaps2(Vector3D p0, Vector3D p1, in TriFrame f)
         {
             var q0 = (p0 - f.A) * f.K;
@@ -666,16 +676,17 @@ namespace ProximityLib.Double
             return Math.Min(s0, s1) > Math.Max(0, Math.Max(e1, e2)) || Math.Max(s0, s1) < Math.Min(0, Math.Min(e1, e2));
         }
 
-        /// <summary>The least squared distance of segment [p0, p1] to the triangle's three edges (the first of equal ones).</summary>
-        private static double EdgesDistance(Vector3D p0, Vector3D p1, in TriFrame f, out double s, out Vector3D onSeg, out Vector3D onTri)
+        /// <summary>The least squared distance of segment [p0, p1] to the triangle's three edges (the first of equal ones); <paramref name="fine"/>: that pair's own range check (in range or an exact 0).</summary>
+        private static double EdgesDistance(Vector3D p0, Vector3D p1, in TriFrame f, out double s, out Vector3D onSeg, out Vector3D onTri, out bool fine)
         {
             double best = double.PositiveInfinity;
             s = 0; onSeg = p0; onTri = f.A;
+            fine = true;
             for (int i = 0; i < 3; i++)
             {
                 f.Edge(i, out var v0, out var v1);
-                double g = SegmentSegmentCore(p0, p1, v0, v1, out double se, out double te, out _);
-                if (g < best) { best = g; s = se + 0; onSeg = SegmentPoint(p0, p1, se); onTri = SegmentPoint(v0, v1, te); }
+                double g = SegmentSegmentCore(p0, p1, v0, v1, out double se, out double te, out bool fineEdge);
+                if (g < best) { best = g; s = se + 0; onSeg = SegmentPoint(p0, p1, se); onTri = SegmentPoint(v0, v1, te); fine = fineEdge; }
             }
             return best;
         }
@@ -686,8 +697,8 @@ namespace ProximityLib.Double
         {
             double size2 = TriFrame.Size2(a, b, c, p0, p1);
             var f = new TriFrame(a, b, c, InverseSizeScale(size2));
-            double sd = SegmentTriangle2(p0, p1, f, false, out double s, out var onSeg, out var onTri, out _);
-            inRange = (Range.In(size2) | (a == b & a == c & a == p0 & a == p1)) & (sd <= 0 | Range.In(sd * sd));
+            double sd = SegmentTriangle2(p0, p1, f, false, out double s, out var onSeg, out var onTri, out _, out bool fine);
+            inRange = (Range.In(size2) | (a == b & a == c & a == p0 & a == p1)) & fine;
             return new DistanceResult3(sd, sd > 0 ? sd * sd : 0, onSeg, onTri, s, 0);
         }
 
@@ -697,7 +708,10 @@ namespace ProximityLib.Double
             double size2 = TriFrame.Size2(a, b, c, p0, p1);
             var f = new TriFrame(a, b, c, InverseSizeScale(size2));
             inRange = Range.In(size2) | (a == b & a == c & a == p0 & a == p1);
-            return Area2(f) != 0 ? SegmentTriangleOverlaps2(p0, p1, f) : EdgesDistance(p0, p1, f, out _, out _, out _) == 0;
+            if (Area2(f) != 0) return SegmentTriangleOverlaps2(p0, p1, f);
+            bool met = EdgesDistance(p0, p1, f, out _, out _, out _, out bool fine) == 0;
+            inRange &= fine;
+            return met;
         }
 
         /// <summary>
@@ -708,8 +722,8 @@ namespace ProximityLib.Double
         {
             double size2 = TriFrame.Size2(a, b, c, p0, p1);
             var f = new TriFrame(a, b, c, InverseSizeScale(size2));
-            double sd = SegmentTriangle2(p0, p1, f, true, out double s, out var onSeg, out var onTri, out var dir);
-            inRange = (Range.In(size2) | (a == b & a == c & a == p0 & a == p1)) & (sd <= 0 | Range.In(sd * sd));
+            double sd = SegmentTriangle2(p0, p1, f, true, out double s, out var onSeg, out var onTri, out var dir, out bool fine);
+            inRange = (Range.In(size2) | (a == b & a == c & a == p0 & a == p1)) & fine;
             return Inflated(sd, onSeg, onTri, dir, s, radius);
         }
     }
