@@ -67,6 +67,7 @@ namespace ProximityTests.Fuzz
         [TestCase(111, 2000000000173)]
         [TestCase(111, 2000000001093)]
         [TestCase(111, 2000000020079)]
+        [TestCase(112, 2000000226348)]
         public void CasesTheLongModeFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = Checker.Run(FuzzCase.Create(seed, index), exact: true);

@@ -17,8 +17,8 @@ namespace ProximityLib.Double
     public static partial class ProximityQuery
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Segment3 a, Ray3 b, out bool inRange) => Kernels.LinearSegment(Linear.Ray(b.Origin, b.Direction), a.Start, a.End, out _, out _, out _, out inRange) == 0;
+        internal static bool Core(Segment3 a, Ray3 b, out bool inRange) => Kernels.LinearSegmentMeet(Linear.Ray(b.Origin, b.Direction), a.Start, a.End, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Segment2 a, Ray2 b, out bool inRange) => Kernels.LinearSegment(Linear.Ray(b.Origin.To3(), b.Direction.To3()), a.Start.To3(), a.End.To3(), out _, out _, out _, out inRange) == 0;
+        internal static bool Core(Segment2 a, Ray2 b, out bool inRange) => Kernels.LinearSegmentMeet(Linear.Ray(b.Origin.To3(), b.Direction.To3()), a.Start.To3(), a.End.To3(), out inRange);
     }
 }

@@ -174,13 +174,19 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double LinearSegment(in Linear a, Vector3D b0, Vector3D b1, out double s, out double t, out Vector3D v, out bool inRange)
         {
-            double r2;
             if (a.IsSegment)
             {
-                r2 = SegmentSegmentCore(a.Start, a.End, b0, b1, out s, out t, out inRange);
+                double r2 = SegmentSegmentCore(a.Start, a.End, b0, b1, out s, out t, out inRange);
                 v = (b0 - a.Start) - (a.Dir * s - (b1 - b0) * t);
                 return r2;
             }
+            return CutLinearSegment(a, b0, b1, out s, out t, out v, out inRange);
+        }
+
+        /// <summary><see cref="LinearSegment"/> for a line or ray (not a segment): the cut, then the segment kernel.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double CutLinearSegment(in Linear a, Vector3D b0, Vector3D b1, out double s, out double t, out Vector3D v, out bool inRange)
+        {
             var q0 = b0 - a.Start;
             var q1 = b1 - a.Start;
             double t0 = Vector3D.Dot(a.Dir, q0), t1 = Vector3D.Dot(a.Dir, q1);
@@ -188,11 +194,19 @@ namespace ProximityLib.Double
             if (a.IsRay) { lo = Math.Max(lo, 0); hi = Math.Max(hi, 0); }
             var c0 = a.Dir * lo;
             var c1 = a.Dir * hi;
-            r2 = SegmentSegmentCore(c0, c1, q0, q1, out double sc, out t, out inRange);
+            double r2 = SegmentSegmentCore(c0, c1, q0, q1, out double sc, out t, out inRange);
             s = sc <= 0.5 ? lo + (hi - lo) * sc : hi - (hi - lo) * (1 - sc);
             v = (q0 - c0) - ((c1 - c0) * sc - (q1 - q0) * t);
             return r2;
         }
+
+        /// <summary>
+        /// Whether a line or ray meets segment [b0, b1]: <see cref="LinearCapsule"/>'s distance is 0. Not LinearSegment
+        /// inlined here: the JIT's inlining budget grows with the calling method's own size, and from a method this small
+        /// it ran out inside the segment kernel, leaving even Vector3D's operators as calls (half the speed of this).
+        /// </summary>
+        public static bool LinearSegmentMeet(in Linear a, Vector3D b0, Vector3D b1, out bool inRange) =>
+            LinearCapsule(a, 0, b0, b1, 0, false, false, out inRange).DistanceSquared == 0;
 
         /// <summary>
         /// A linear component a, thickened by ra when it is a capsule's axis, against the capsule (or, for rb = 0 and

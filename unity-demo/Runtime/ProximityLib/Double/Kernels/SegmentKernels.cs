@@ -42,13 +42,14 @@ namespace ProximityLib.Double
             // the product is formed first so the test is the same in either order) and |n|² not 0 (two segments tiny
             // beside their distance can underflow it and the lengths' product alike). Everything else is rare and goes
             // out of line, returning a struct: an out argument would pin this path's s and t in memory.
-            if (a == 0 || e == 0 || !(nn > 0 && nn >= 1e-4 * (d0k.LengthSquared * d1k.LengthSquared)))
+            double ak = d0k.LengthSquared, ek = d1k.LengthSquared;
+            if (ak == 0 || ek == 0 || !(nn > 0 && nn >= 1e-4 * (ak * ek)))
             {
                 var rare = SegmentSegmentRare(a0, a1, b0, b1, nn, sNum, tNum);
                 s = rare.S; t = rare.T; inRange = rare.InRange;
                 return rare.R2;
             }
-            // The configuration's squared size in the fast range (it is not 0: a is not), and below, the squared
+            // The configuration's squared size in the fast range (it is not 0: neither length is), and below, the squared
             // distance in it too or exactly 0 (a subnormal one would have lost bits, and 2^k-scaled inputs would not agree).
             bool sized = Range.In(size2);
             // si ∈ [0, 1] exactly when 0 ≤ sNum ≤ nn (nn > 0; a rounded quotient of sNum > nn exceeds 1), so the
@@ -64,11 +65,14 @@ namespace ProximityLib.Double
                 return gap2;
             }
             double si = sNum / nn, ti = tNum / nn;
-            double b = Vector3D.Dot(d0, d1), c = -Vector3D.Dot(d0, w), f = -Vector3D.Dot(d1, w);
+            // On the scaled copy: a dot product of an edge with a short offset (an end near the other segment's) would
+            // underflow at the small end of the fast range, and the parameters would then not scale exactly. Scaling
+            // by k is exact, so elsewhere these are the unscaled values' bits.
+            double b = Vector3D.Dot(d0k, d1k), c = -Vector3D.Dot(d0k, wk), f = -Vector3D.Dot(d1k, wk);
             double outS = Math.Max(-si, si - 1), outT = Math.Max(-ti, ti - 1);
-            if (outS > outT || (outS == outT && !Order.Swap(a0, a1, b0, b1))) ClampFirst(a, e, b, c, f, si, out s, out t);
-            else ClampFirst(e, a, b, -f, -c, ti, out t, out s); // the mirror image: t first
-            return Residual(d0, d1, w, s, t, sized, out inRange);
+            if (outS > outT || (outS == outT && !Order.Swap(a0, a1, b0, b1))) ClampFirst(ak, ek, b, c, f, si, out s, out t);
+            else ClampFirst(ek, ak, b, -f, -c, ti, out t, out s); // the mirror image: t first
+            return ScaledResidual(d0k, d1k, wk, 1 / k, s, t, sized, out inRange);
         }
 
         /// <summary><see cref="SegmentSegmentInline"/> as a call, for the kernels that use it inside larger ones.</summary>
@@ -97,20 +101,28 @@ namespace ProximityLib.Double
             double a = d0.LengthSquared, e = d1.LengthSquared, size2 = a + e + w.LengthSquared;
             // The configuration's squared size in the fast range, or every point the same.
             bool sized = Range.In(size2) || (size2 == 0 && a0 == a1 && b0 == b1 && a0 == b0);
+            // Every step on the copy scaled by k (a power of two: exact, so elsewhere the unscaled values' bits): a point
+            // near a segment's end, or a candidate pair at rounding distance, forms products that would underflow at the
+            // small end of the fast range, and the parameters would then not scale exactly.
+            double k = InverseSizeScale(size2), ik = 1 / k;
+            var d0k = d0 * k;
+            var d1k = d1 * k;
+            var wk = w * k;
+            double ak = d0k.LengthSquared, ek = d1k.LengthSquared;
             double s, t;
             bool inRange;
-            if (a == 0 || e == 0)
+            if (ak == 0 || ek == 0)
             {
                 // A point against a segment (or a point).
-                if (a == 0 && e == 0) { s = 0; t = 0; }
-                else if (a == 0) { s = 0; t = Num.Clamp(-Vector3D.Dot(d1, w) / e, 0, 1); }
-                else { t = 0; s = Num.Clamp(Vector3D.Dot(d0, w) / a, 0, 1); }
-                double r2 = Residual(d0, d1, w, s, t, sized, out inRange);
+                if (ak == 0 && ek == 0) { s = 0; t = 0; }
+                else if (ak == 0) { s = 0; t = Num.Clamp(-Vector3D.Dot(d1k, wk) / ek, 0, 1); }
+                else { t = 0; s = Num.Clamp(Vector3D.Dot(d0k, wk) / ak, 0, 1); }
+                double r2 = ScaledResidual(d0k, d1k, wk, ik, s, t, sized, out inRange);
                 return new Closest(r2, s, t, inRange);
             }
             bool hasInterior = nn > 0;
-            double best = NearlyParallel(a0, a1, b0, b1, d0, d1, w, hasInterior, hasInterior ? sNum / nn : 0, hasInterior ? tNum / nn : 0, out s, out t, out var r);
-            return new Closest(best, s, t, sized && Range.Length2(r, best));
+            double best = NearlyParallel(a0, a1, b0, b1, d0k, d1k, wk, hasInterior, hasInterior ? sNum / nn : 0, hasInterior ? tNum / nn : 0, out s, out t, out var r) * ik * ik;
+            return new Closest(best, s, t, sized && (Range.In(best) || r == default));
         }
 
         /// <summary>
@@ -191,13 +203,16 @@ namespace ProximityLib.Double
         private static bool Pick(double r2A, double r2B, Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1) =>
             r2A < r2B || (r2A == r2B && !Order.Swap(a0, a1, b0, b1));
 
-        /// <summary>|a0 + s·d0 − b0 − t·d1|², formed from the differences so no endpoint's position enters.</summary>
+        /// <summary>
+        /// |a0 + s·d0 − b0 − t·d1|² from the differences scaled by k (so no endpoint's position enters and no square
+        /// underflows inside the fast range), unscaled by multiplying by ik = 1/k twice: exact, a power of two.
+        /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double Residual(Vector3D d0, Vector3D d1, Vector3D w, double s, double t, bool sized, out bool inRange)
+        private static double ScaledResidual(Vector3D d0k, Vector3D d1k, Vector3D wk, double ik, double s, double t, bool sized, out bool inRange)
         {
-            var v = d0 * s - d1 * t - w;
-            double r2 = v.LengthSquared;
-            inRange = sized && Range.Length2(v, r2);
+            var v = d0k * s - d1k * t - wk;
+            double r2 = v.LengthSquared * ik * ik;
+            inRange = sized && (Range.In(r2) || v == default);
             return r2;
         }
 
