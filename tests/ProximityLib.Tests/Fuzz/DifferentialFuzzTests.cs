@@ -68,6 +68,8 @@ namespace ProximityTests.Fuzz
         [TestCase(111, 2000000001093)]
         [TestCase(111, 2000000020079)]
         [TestCase(112, 2000000226348)]
+        [TestCase(112, 2000000010368)]
+        [TestCase(112, 2000000423716)]
         public void CasesTheLongModeFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = Checker.Run(FuzzCase.Create(seed, index), exact: true);

@@ -14,13 +14,14 @@ namespace ProximityLib.Double
         /// </summary>
         public static DistanceResult2 BoxBox2(in Box2 a, in Box2 b, out bool inRange)
         {
-            inRange = Range.Box(Size2(a, b));
+            double size = Size2(a, b), k = Num.InversePowerOfTwo(size);
+            inRange = Range.Box(size);
             var shift = a.Origin;
             var d = b.Origin - shift;
             Vector2D onA, onB;
             if (!BoxBoxOverlaps2(a, b))
             {
-                double gap = BoxesApart2(a, default, b, d, out onA, out onB);
+                double gap = BoxesApart2(a, default, b, d, k, out onA, out onB);
                 inRange &= Range.In(gap); // a zero gap of boxes found apart may have underflowed: the slow path
                 return new DistanceResult2(Math.Sqrt(gap), gap, onA + shift, onB + shift, 0, 0);
             }
@@ -28,7 +29,7 @@ namespace ProximityLib.Double
             var cb = d + b.ToWorldOffset(b.LocalCenter);
             double depth = Penetration2(a, b, cb - ca, out var push);
             if (depth < 0) push = default;
-            double g = BoxesApart2(a, push, b, d, out onA, out onB);
+            double g = BoxesApart2(a, push, b, d, k, out onA, out onB);
             onA = onA - push + shift;
             onB += shift;
             if (depth < 0)
@@ -45,7 +46,8 @@ namespace ProximityLib.Double
         /// </summary>
         public static double BoxBoxDistance2(in Box2 a, in Box2 b, out bool inRange)
         {
-            inRange = Range.Box(Size2(a, b));
+            double size = Size2(a, b);
+            inRange = Range.Box(size);
             var shift = a.Origin;
             var d = b.Origin - shift;
             if (BoxBoxOverlaps2(a, b))
@@ -55,7 +57,7 @@ namespace ProximityLib.Double
                 double depth = Penetration2(a, b, cb - ca, out _);
                 if (depth >= 0) return -depth;
             }
-            double gap = BoxesApart2(a, default, b, d, out _, out _);
+            double gap = BoxesApart2(a, default, b, d, Num.InversePowerOfTwo(size), out _, out _);
             inRange &= Range.In(gap); // a zero gap of boxes found apart may have underflowed: the slow path
             return Math.Sqrt(gap);
         }
@@ -133,10 +135,13 @@ namespace ProximityLib.Double
         /// <summary>
         /// The planar <see cref="BoxesApart"/>: the least squared gap of A's four corners to box B (in B's frame) and of
         /// B's four corners to box A (the first of equal ones, A's before B's), and the pair realising it in world
-        /// coordinates (relative to the common origin the caller subtracted).
+        /// coordinates (relative to the common origin the caller subtracted). The gaps are compared scaled by k, the power
+        /// of two that brings the configuration's size near 1: at the small end of the fast range the squares of gaps
+        /// between touching boxes underflow to equal zeros, and the first of them is not the corner the same boxes
+        /// scaled up would pick.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static double BoxesApart2(in Box2 a, Vector2D originA, in Box2 b, Vector2D originB, out Vector2D onA, out Vector2D onB)
+        private static double BoxesApart2(in Box2 a, Vector2D originA, in Box2 b, Vector2D originB, double k, out Vector2D onA, out Vector2D onB)
         {
             var ax = b.ToLocal(a.X);
             var ay = b.ToLocal(a.Y);
@@ -155,7 +160,7 @@ namespace ProximityLib.Double
             var pa1 = pa + dx;
             var pb1 = pb + ex;
 
-            double best = Corners2(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, out int win);
+            double best = Corners2(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, k, out int win);
 
             int c = win & 3;
             if (win < 4)
@@ -178,42 +183,48 @@ namespace ProximityLib.Double
         /// <summary>
         /// The least squared gap of A's corners (pa + sums of dx, dy; B's frame) to B's box and of B's corners (pb + sums
         /// of ex, ey; A's frame) to A's box, and which corner holds it (0–3 A's, 4–7 B's; bit 0 adds the x edge, bit 1
-        /// the y edge, as (p + dx) + dy; the first of equal ones).
+        /// the y edge, as (p + dx) + dy; the first of equal ones). Each gap's components are multiplied by k (a power of
+        /// two) before squaring and the least square by 1/k twice: exact, so where nothing underflows these are the
+        /// unscaled values' bits, and where the unscaled squares would underflow the comparisons still tell them apart.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static double Corners2(Vector2D pa, Vector2D dx, Vector2D dy, Vector2D loB, Vector2D hiB,
-            Vector2D pb, Vector2D ex, Vector2D ey, Vector2D loA, Vector2D hiA, out int win)
+            Vector2D pb, Vector2D ex, Vector2D ey, Vector2D loA, Vector2D hiA, double k, out int win)
         {
+            double ik = 1 / k;
 #if NET
-            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported) return Corners2Vector(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, out win);
+            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported) return Corners2Vector(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, k, out win) * ik * ik;
 #endif
-            return Corners2Scalar(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, out win);
+            return Corners2Scalar(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, k, out win) * ik * ik;
         }
 
-        /// <summary>The scalar form of <see cref="Corners2"/>: the only one on netstandard2.1 (Unity) and without AVX2.</summary>
+        /// <summary>
+        /// The scalar form of <see cref="Corners2"/>, returning the least squared gap still scaled by k²: the only one on
+        /// netstandard2.1 (Unity) and without AVX2.
+        /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
         internal static double Corners2Scalar(Vector2D pa, Vector2D dx, Vector2D dy, Vector2D loB, Vector2D hiB,
-            Vector2D pb, Vector2D ex, Vector2D ey, Vector2D loA, Vector2D hiA, out int win)
+            Vector2D pb, Vector2D ex, Vector2D ey, Vector2D loA, Vector2D hiA, double k, out int win)
         {
             var pa1 = pa + dx;
             var pb1 = pb + ex;
-            double best = Gap2(pa, loB, hiB);
+            double best = Gap2(pa, loB, hiB, k);
             win = 0;
-            Least(Gap2(pa1, loB, hiB), 1, ref best, ref win);
-            Least(Gap2(pa + dy, loB, hiB), 2, ref best, ref win);
-            Least(Gap2(pa1 + dy, loB, hiB), 3, ref best, ref win);
-            Least(Gap2(pb, loA, hiA), 4, ref best, ref win);
-            Least(Gap2(pb1, loA, hiA), 5, ref best, ref win);
-            Least(Gap2(pb + ey, loA, hiA), 6, ref best, ref win);
-            Least(Gap2(pb1 + ey, loA, hiA), 7, ref best, ref win);
+            Least(Gap2(pa1, loB, hiB, k), 1, ref best, ref win);
+            Least(Gap2(pa + dy, loB, hiB, k), 2, ref best, ref win);
+            Least(Gap2(pa1 + dy, loB, hiB, k), 3, ref best, ref win);
+            Least(Gap2(pb, loA, hiA, k), 4, ref best, ref win);
+            Least(Gap2(pb1, loA, hiA, k), 5, ref best, ref win);
+            Least(Gap2(pb + ey, loA, hiA, k), 6, ref best, ref win);
+            Least(Gap2(pb1 + ey, loA, hiA, k), 7, ref best, ref win);
             return best;
         }
 
-        /// <summary>The squared length of p − clamp(p) against the box [lo, hi] (box-local).</summary>
+        /// <summary>The squared length of (p − clamp(p))·k against the box [lo, hi] (box-local).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double Gap2(Vector2D p, Vector2D lo, Vector2D hi)
+        private static double Gap2(Vector2D p, Vector2D lo, Vector2D hi, double k)
         {
-            double x = Outside(p.X, lo.X, hi.X), y = Outside(p.Y, lo.Y, hi.Y);
+            double x = Outside(p.X, lo.X, hi.X) * k, y = Outside(p.Y, lo.Y, hi.Y) * k;
             return x * x + y * y;
         }
 

@@ -218,10 +218,11 @@ namespace ProximityLib.Double
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
         internal static double Corners2Vector(Vector2D pa, Vector2D dx, Vector2D dy, Vector2D loB, Vector2D hiB,
-            Vector2D pb, Vector2D ex, Vector2D ey, Vector2D loA, Vector2D hiA, out int win)
+            Vector2D pb, Vector2D ex, Vector2D ey, Vector2D loA, Vector2D hiA, double k, out int win)
         {
-            Vector256<double> rx = Outside(Corners4(pa.X, dx.X, dy.X), loB.X, hiB.X), ry = Outside(Corners4(pa.Y, dx.Y, dy.Y), loB.Y, hiB.Y);
-            Vector256<double> sx = Outside(Corners4(pb.X, ex.X, ey.X), loA.X, hiA.X), sy = Outside(Corners4(pb.Y, ex.Y, ey.Y), loA.Y, hiA.Y);
+            var kk = Vector256.Create(k);
+            Vector256<double> rx = Outside(Corners4(pa.X, dx.X, dy.X), loB.X, hiB.X) * kk, ry = Outside(Corners4(pa.Y, dx.Y, dy.Y), loB.Y, hiB.Y) * kk;
+            Vector256<double> sx = Outside(Corners4(pb.X, ex.X, ey.X), loA.X, hiA.X) * kk, sy = Outside(Corners4(pb.Y, ex.Y, ey.Y), loA.Y, hiA.Y) * kk;
             var a = rx * rx + ry * ry;
             var b = sx * sx + sy * sy;
             var m = Vector256.Min(a, b);

@@ -158,8 +158,9 @@ namespace ProximityTests.Double.Kernels
                 Vector2D Abs(Vector2D v) => new Vector2D(Math.Abs(v.X), Math.Abs(v.Y));
                 Vector2D pa = G(4), dx = G(2), dy = G(2), pb = G(4), ex = G(2), ey = G(2);
                 Vector2D loA = -Abs(G(2)), hiA = Abs(G(2)), loB = -Abs(G(2)), hiB = Abs(G(2));
-                double scalar = ProximityLib.Double.Kernels.Corners2Scalar(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, out int winS);
-                double vector = ProximityLib.Double.Kernels.Corners2Vector(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, out int winV);
+                double k = Math.ScaleB(1, r.Next(-4, 5));
+                double scalar = ProximityLib.Double.Kernels.Corners2Scalar(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, k, out int winS);
+                double vector = ProximityLib.Double.Kernels.Corners2Vector(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, k, out int winV);
                 Assert.That(BitConverter.DoubleToInt64Bits(vector), Is.EqualTo(BitConverter.DoubleToInt64Bits(scalar)), $"case {i}: gap");
                 Assert.That(winV, Is.EqualTo(winS), $"case {i}: corner");
             }

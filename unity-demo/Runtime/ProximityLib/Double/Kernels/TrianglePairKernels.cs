@@ -205,21 +205,23 @@ namespace ProximityLib.Double
             var ra = a - o;
             var rb = b - o;
             var rc = c - o;
-            inRange = Range.Box(Math.Max(Math.Max(Range.MaxAbs(ra), Range.MaxAbs(rb)), Math.Max(Range.MaxAbs(rc), Range.MaxAbs(box.Hi - box.Lo))));
+            double size = Math.Max(Math.Max(Range.MaxAbs(ra), Range.MaxAbs(rb)), Math.Max(Range.MaxAbs(rc), Range.MaxAbs(box.Hi - box.Lo)));
+            inRange = Range.Box(size);
+            double k = Num.InversePowerOfTwo(size);
             var la = box.ToLocal(ra);
             var lb = box.ToLocal(rb);
             var lc = box.ToLocal(rc);
             Vector3D pa, pb;
             if (!TriangleBoxSat(la, lb, lc, box, true, out double depth, out var dir))
             {
-                double g = TriangleBoxApart(la, lb, lc, box.Lo, box.Hi, box.Planar, out pa, out pb);
+                double g = TriangleBoxApart(la, lb, lc, box.Lo, box.Hi, box.Planar, k, out pa, out pb);
                 // A subnormal squared gap has lost bits, and a zero one is rare here (found apart) and may have underflowed:
                 // the slow path answers both at a scale where they have not (2^k-scaled inputs agree).
                 inRange &= Range.In(g);
                 return new DistanceResult3(Math.Sqrt(g), g, o + box.ToWorldOffset(pa), o + box.ToWorldOffset(pb), 0, 0);
             }
             var push = dir * depth;
-            TriangleBoxApart(la + push, lb + push, lc + push, box.Lo, box.Hi, box.Planar, out pa, out pb);
+            TriangleBoxApart(la + push, lb + push, lc + push, box.Lo, box.Hi, box.Planar, k, out pa, out pb);
             return new DistanceResult3(depth > 0 ? -depth : 0, 0, o + box.ToWorldOffset(pa - push), o + box.ToWorldOffset(pb), 0, 0);
         }
 
@@ -293,11 +295,16 @@ namespace ProximityLib.Double
         /// <summary>
         /// Squared distance between the box-local triangle (la, lb, lc) and the box [lo, hi] when they are apart (0 when
         /// they touch), and a closest pair (box-local): the triangle's edges against the box, then in 3D the box's edges
-        /// against the triangle.
+        /// against the triangle. All on the copy scaled by k, the power of two that brings the configuration's size near 1,
+        /// unscaled at the end (exact, so elsewhere the same bits): at the small end of the fast range the squared gaps of
+        /// a triangle just touching the box underflow to equal zeros, and the first of them is not the pair the same shapes
+        /// scaled up would pick.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static double TriangleBoxApart(Vector3D la, Vector3D lb, Vector3D lc, Vector3D lo, Vector3D hi, bool planar, out Vector3D pa, out Vector3D pb)
+        private static double TriangleBoxApart(Vector3D la, Vector3D lb, Vector3D lc, Vector3D lo, Vector3D hi, bool planar, double k, out Vector3D pa, out Vector3D pb)
         {
+            la *= k; lb *= k; lc *= k; lo *= k; hi *= k;
+            double ik = 1 / k;
             double best = double.PositiveInfinity;
             pa = la; pb = lo;
             for (int i = 0; i < 3; i++)
@@ -308,7 +315,7 @@ namespace ProximityLib.Double
                 double g = SegmentBoxLocal(v0, d, lo, hi, out double t);
                 if (g < best) { best = g; pa = SegmentPoint(v0, v1, t); pb = Clamp(v0 + d * t, lo, hi); }
             }
-            if (planar || best == 0) return best;
+            if (planar || best == 0) return Unscaled(best, ik, ref pa, ref pb);
             double size2 = TriFrame.Size2(la, lb, lc, lo, hi);
             var f = new TriFrame(la, lb, lc, InverseSizeScale(size2));
             for (int i = 0; i < 3 && best > 0; i++)
@@ -322,7 +329,16 @@ namespace ProximityLib.Double
                     if (g < best) { best = g; pa = q; pb = x; }
                 }
             }
-            return best;
+            return Unscaled(best, ik, ref pa, ref pb);
+        }
+
+        /// <summary>A squared gap and its pair found on a copy scaled by 1/ik, unscaled (exact: ik is a power of two).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Unscaled(double g2, double ik, ref Vector3D pa, ref Vector3D pb)
+        {
+            pa *= ik;
+            pb *= ik;
+            return g2 * ik * ik;
         }
     }
 }
