@@ -70,6 +70,8 @@ namespace ProximityTests.Fuzz
         [TestCase(112, 2000000226348)]
         [TestCase(112, 2000000010368)]
         [TestCase(112, 2000000423716)]
+        [TestCase(114, 2000000349767)]
+        [TestCase(114, 2000000962814)]
         public void CasesTheLongModeFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = Checker.Run(FuzzCase.Create(seed, index), exact: true);

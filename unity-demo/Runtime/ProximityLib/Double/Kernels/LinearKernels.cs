@@ -288,11 +288,18 @@ namespace ProximityLib.Double
             return new DistanceResult3(d, 0, pa - axis * ra, pb + axis * rb, s, t);
         }
 
-        /// <summary>The parameter of the point of a nearest to a.Start + q, within a's range.</summary>
+        /// <summary>
+        /// The parameter of the point of a nearest to a.Start + q, within a's range. On q and the direction scaled by the
+        /// power of two that brings the direction near 1 (exact, so elsewhere the same bits): a short q times a long
+        /// direction would underflow at the small end of the fast range.
+        /// </summary>
         private static double Project(in Linear a, Vector3D q)
         {
-            double dd = a.Dir.LengthSquared;
-            return dd == 0 ? 0 : Num.Clamp(Vector3D.Dot(q, a.Dir) / dd, a.Lo, a.Hi);
+            double m = Range.MaxAbs(a.Dir);
+            if (m == 0) return 0;
+            double k = Num.InversePowerOfTwo(m);
+            var dk = a.Dir * k;
+            return Num.Clamp(Vector3D.Dot(q * k, dk) / dk.LengthSquared, a.Lo, a.Hi);
         }
 
         /// <summary>

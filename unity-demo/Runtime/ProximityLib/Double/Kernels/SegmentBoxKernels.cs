@@ -13,41 +13,47 @@ namespace ProximityLib.Double
         /// <see cref="SlabSlope"/> is nondecreasing: its sign at the ends and at the breakpoints brackets the minimum in
         /// one piece, where the set of clamped axes is fixed and the minimum is that piece's clamped stationary point
         /// (the closed form; no sorting, one piece solved). The squared gap is measured at the returned parameter.
+        /// The slopes and the stationary point's sums take d scaled by kd, the power of two that brings it near 1 (the
+        /// stationary point is unscaled by kd: all exact, so elsewhere the same bits): a segment far shorter than its
+        /// distance to the box (a line clipped to a short stretch) at the small end of the fast range would otherwise
+        /// square or multiply its direction into underflow, and a zero slope there decides the bracket wrongly.
         /// </summary>
         public static double SegmentBoxLocal(Vector3D a, Vector3D d, Vector3D lo, Vector3D hi, out double t)
         {
+            double kd = Num.InversePowerOfTwo(Range.MaxAbs(d));
+            var dk = d * kd;
             double left = 0, right = 1;
-            if (SlabSlope(a, d, lo, hi, 0) >= 0) right = 0;
-            else if (SlabSlope(a, d, lo, hi, 1) <= 0) left = 1;
+            if (SlabSlope(a, d, dk, lo, hi, 0) >= 0) right = 0;
+            else if (SlabSlope(a, d, dk, lo, hi, 1) <= 0) left = 1;
             else
             {
-                Narrow(a, d, lo, hi, (lo.X - a.X) / d.X, ref left, ref right);
-                Narrow(a, d, lo, hi, (hi.X - a.X) / d.X, ref left, ref right);
-                Narrow(a, d, lo, hi, (lo.Y - a.Y) / d.Y, ref left, ref right);
-                Narrow(a, d, lo, hi, (hi.Y - a.Y) / d.Y, ref left, ref right);
-                Narrow(a, d, lo, hi, (lo.Z - a.Z) / d.Z, ref left, ref right);
-                Narrow(a, d, lo, hi, (hi.Z - a.Z) / d.Z, ref left, ref right);
+                Narrow(a, d, dk, lo, hi, (lo.X - a.X) / d.X, ref left, ref right);
+                Narrow(a, d, dk, lo, hi, (hi.X - a.X) / d.X, ref left, ref right);
+                Narrow(a, d, dk, lo, hi, (lo.Y - a.Y) / d.Y, ref left, ref right);
+                Narrow(a, d, dk, lo, hi, (hi.Y - a.Y) / d.Y, ref left, ref right);
+                Narrow(a, d, dk, lo, hi, (lo.Z - a.Z) / d.Z, ref left, ref right);
+                Narrow(a, d, dk, lo, hi, (hi.Z - a.Z) / d.Z, ref left, ref right);
             }
             if (left < right)
             {
                 // One piece: the axes clamped at its middle stay clamped on it; their quadratic's stationary point, clamped.
                 double tm = 0.5 * (left + right), num = 0, den = 0;
-                Accumulate(a.X, d.X, lo.X, hi.X, tm, ref num, ref den);
-                Accumulate(a.Y, d.Y, lo.Y, hi.Y, tm, ref num, ref den);
-                Accumulate(a.Z, d.Z, lo.Z, hi.Z, tm, ref num, ref den);
-                t = den > 0 ? Num.Clamp(num / den, left, right) : left;
+                Accumulate(a.X, d.X, dk.X, lo.X, hi.X, tm, ref num, ref den);
+                Accumulate(a.Y, d.Y, dk.Y, lo.Y, hi.Y, tm, ref num, ref den);
+                Accumulate(a.Z, d.Z, dk.Z, lo.Z, hi.Z, tm, ref num, ref den);
+                t = den > 0 ? Num.Clamp(num / den * kd, left, right) : left;
             }
             else t = left; // the minimum is at an end or exactly at a breakpoint
             return Gap(a.X, d.X, lo.X, hi.X, t) + Gap(a.Y, d.Y, lo.Y, hi.Y, t) + Gap(a.Z, d.Z, lo.Z, hi.Z, t);
         }
 
         /// <summary>
-        /// Half the derivative of the squared distance from a + t·d to the box at t: Σ d_i·(e_i − clamp(e_i)), e = a + t·d.
-        /// Nondecreasing in t (each term is).
+        /// Half the derivative of the squared distance from a + t·d to the box at t, times 1/kd (dk = d·kd, kd &gt; 0: the
+        /// same sign): Σ dk_i·(e_i − clamp(e_i)), e = a + t·d. Nondecreasing in t (each term is).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double SlabSlope(Vector3D a, Vector3D d, Vector3D lo, Vector3D hi, double t) =>
-            d.X * Outside(a.X + t * d.X, lo.X, hi.X) + d.Y * Outside(a.Y + t * d.Y, lo.Y, hi.Y) + d.Z * Outside(a.Z + t * d.Z, lo.Z, hi.Z);
+        private static double SlabSlope(Vector3D a, Vector3D d, Vector3D dk, Vector3D lo, Vector3D hi, double t) =>
+            dk.X * Outside(a.X + t * d.X, lo.X, hi.X) + dk.Y * Outside(a.Y + t * d.Y, lo.Y, hi.Y) + dk.Z * Outside(a.Z + t * d.Z, lo.Z, hi.Z);
 
         /// <summary>
         /// e − clamp(e, lo, hi): how far e lies outside [lo, hi], signed (branch-free: at most one term is not 0). With
@@ -64,24 +70,24 @@ namespace ProximityLib.Double
         /// number: an axis the segment does not move along has none): the slope's sign there says on which side the minimum is.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void Narrow(Vector3D a, Vector3D d, Vector3D lo, Vector3D hi, double b, ref double left, ref double right)
+        private static void Narrow(Vector3D a, Vector3D d, Vector3D dk, Vector3D lo, Vector3D hi, double b, ref double left, ref double right)
         {
             if (!(b > left && b < right)) return;
-            double s = SlabSlope(a, d, lo, hi, b);
+            double s = SlabSlope(a, d, dk, lo, hi, b);
             if (s <= 0) left = b;
             if (s >= 0) right = b;
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void Accumulate(double a, double d, double lo, double hi, double t, ref double num, ref double den)
+        private static void Accumulate(double a, double d, double dk, double lo, double hi, double t, ref double num, ref double den)
         {
             double e = a + t * d;
             double bound;
             if (e < lo) bound = lo;
             else if (e > hi) bound = hi;
             else return;
-            num += d * (bound - a);
-            den += d * d;
+            num += dk * (bound - a);
+            den += dk * dk;
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
