@@ -1,6 +1,8 @@
 using System;
 using NUnit.Framework;
 using ProximityLib.Double;
+using ProximityReference;
+using ProximityTests.Support;
 using static ProximityTests.Support.Expect;
 
 namespace ProximityTests.Pairs
@@ -43,5 +45,62 @@ namespace ProximityTests.Pairs
 
         [Test]
         public void ScalesExactlyAndStaysFiniteOverTheDoubleRange() => LinearFamilies.CheckScaling("capsule", "capsule");
+
+        /// <summary>
+        /// Axes 1e-9 … 1e-15 apart (size ~3, radii 0.3 + 0.2): A moved by PointB − PointA must touch B to within 64 u·S,
+        /// checked exactly. The rounded residual's direction is off by about u·S/gap there, and a radius pushed along it
+        /// left up to 7e-7 of overlap. Modes: 0 two interior points (3D), 1 B's end against A's interior, 2 A's end
+        /// against B's interior, 3 mode 1 in the plane.
+        /// </summary>
+        [TestCase(0)]
+        [TestCase(1)]
+        [TestCase(2)]
+        [TestCase(3)]
+        public void NearlyTouchingAxesPushOutToTouching(int mode)
+        {
+            var rnd = new Random(41 + mode);
+            Vector3D R() => new Vector3D(rnd.NextDouble() - 0.5, rnd.NextDouble() - 0.5, mode == 3 ? 0 : rnd.NextDouble() - 0.5);
+            Vector3D Unit(Vector3D v) => v * (1 / v.Length);
+            for (int i = 0; i < 70; i++)
+            {
+                double h = Math.Pow(10, -9 - i % 7);
+                var a0 = new Vector3D(rnd.NextDouble() * 3, rnd.NextDouble() * 3, mode == 3 ? 0 : rnd.NextDouble() * 3);
+                var dA = R();
+                var p = a0 + dA * 0.4;
+                Vector3D b0, b1;
+                if (mode == 0)
+                {
+                    var dB = R();
+                    var n = Unit(Vector3D.Cross(dA, dB));
+                    b0 = p + n * h - dB * 0.3;
+                    b1 = p + n * h + dB * 0.7;
+                }
+                else
+                {
+                    // q: a unit direction perpendicular to A; B leaves A's side along q, tilted.
+                    var q = R();
+                    q = Unit(q - dA * (Vector3D.Dot(q, dA) / dA.LengthSquared));
+                    b0 = p + q * h;
+                    b1 = b0 + q * 0.8 + dA * (rnd.NextDouble() - 0.5);
+                }
+                object a, b;
+                if (mode == 3) { a = new Capsule2(new Vector2D(a0.X, a0.Y), new Vector2D(a0.X + dA.X, a0.Y + dA.Y), 0.3); b = new Capsule2(new Vector2D(b0.X, b0.Y), new Vector2D(b1.X, b1.Y), 0.2); }
+                else if (mode == 2) { a = new Capsule3(b1, b0, 0.2); b = new Capsule3(a0, a0 + dA, 0.3); }
+                else { a = new Capsule3(a0, a0 + dA, 0.3); b = new Capsule3(b0, b1, 0.2); }
+                var ra = RShape.FromAny(a);
+                var rb = RShape.FromAny(b);
+                double tol = 64 * Exactly.U * Exact.Scale(ra, rb);
+                foreach (var (x, y, rx, ry) in new[] { (a, b, ra, rb), (b, a, rb, ra) })
+                {
+                    RVec pa, pb;
+                    double d;
+                    if (x is Capsule2 c2) { var r = ClosestDistance.Between(c2, (Capsule2)y); pa = RVec.From(r.PointA); pb = RVec.From(r.PointB); d = r.Distance; }
+                    else { var r = ClosestDistance.Between((Capsule3)x, (Capsule3)y); pa = RVec.From(r.PointA); pb = RVec.From(r.PointB); d = r.Distance; }
+                    double after = Exact.SignedDistance(rx.Translated(pb - pa), ry).ToDouble();
+                    Assert.That(d, Is.LessThan(0), $"case {i}: {x} vs {y}");
+                    Assert.That(Math.Abs(after), Is.LessThanOrEqualTo(tol), $"case {i} (gap {h:G1}): {x} vs {y} moved by PointB − PointA is {after:R} from touching");
+                }
+            }
+        }
     }
 }

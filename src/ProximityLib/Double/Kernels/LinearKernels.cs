@@ -238,8 +238,13 @@ namespace ProximityLib.Double
                 if (g < 0) return Crossing2(a, ra, b, rb, g, axis, aFlat);
                 // Touching axes have no residual: the separating axis orients the push (A lies on its + side).
                 n = !meet ? v * (1 / v.Length) : (axis != default ? -axis : Vector3D.UnitX);
+                if (!meet && dist < reach * NearAxes) n = NearAxesNormal(a, b0, b1, s, t, true, n);
             }
-            else if (!meet) n = v * (1 / v.Length);
+            else if (!meet)
+            {
+                n = v * (1 / v.Length);
+                if (dist < reach * NearAxes) n = NearAxesNormal(a, b0, b1, s, t, false, n);
+            }
             else
             {
                 // Meeting axes: the common normal separates them whether they meet at interior points or endpoints
@@ -255,6 +260,76 @@ namespace ProximityLib.Double
             }
             double d = dist - r;
             return new DistanceResult3(d, d > 0 ? d * d : 0, pa + n * ra, pb - n * rb, s, t);
+        }
+
+        /// <summary>Axes closer than 2^-20 of their reach: the residual's direction is no longer good to 2^-32.</summary>
+        private const double NearAxes = 9.5367431640625E-07;
+
+        /// <summary>
+        /// The unit normal from axis A to segment [b0, b1] when they nearly touch (the closest pair at a, s and the
+        /// segment, t). The rounded residual turns by about u·reach/dist there, and a radius pushed out along it leaves
+        /// radius·angle²/2 of overlap (axes 1e-12 apart: 5e-8). So the normal is formed from the features that hold the
+        /// pair, from the exact inputs: two interior points, the common normal of the directions; an end against an
+        /// interior point, the end's perpendicular to the other line (<see cref="AccuratePerp"/>); two ends, their
+        /// exact difference. Turned to agree with <paramref name="residual"/> (its direction is right to far better
+        /// than a right angle), which is also the answer when the features give nothing (parallel interiors; in the
+        /// plane, two interior points apart are parallel ones).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static Vector3D NearAxesNormal(in Linear a, Vector3D b0, Vector3D b1, double s, double t, bool planar, Vector3D residual)
+        {
+            bool sIn = s > a.Lo && s < a.Hi, tIn = t > 0 && t < 1;
+            Vector3D eh, el, r;
+            if (a.IsSegment) ExactDiff(a.End, a.Start, 1, out eh, out el);
+            else { eh = a.Dir; el = default; }
+            if (sIn && tIn)
+            {
+                if (planar) return residual;
+                var dB = b1 - b0;
+                double mA = Range.MaxAbs(eh), mB = Range.MaxAbs(dB);
+                var c = AccurateCross(eh * Num.InversePowerOfTwo(mA), dB * Num.InversePowerOfTwo(mB));
+                // Nearly parallel interiors: the common normal is noise; the residual is as good as anything here.
+                r = c.LengthSquared > 1e-20 ? c : default;
+            }
+            else if (sIn) r = -AccuratePerp(t <= 0 ? b0 : b1, a.Start, eh, el);
+            else
+            {
+                var p = s <= a.Lo ? a.Start : a.End;
+                if (tIn)
+                {
+                    ExactDiff(b1, b0, 1, out var fh, out var fl);
+                    r = AccuratePerp(p, b0, fh, fl);
+                }
+                else
+                {
+                    ExactDiff(t <= 0 ? b0 : b1, p, 1, out var h, out var l);
+                    r = h + l;
+                }
+            }
+            var n = Unit(r, residual);
+            return Vector3D.Dot(n, residual) < 0 ? -n : n;
+        }
+
+        /// <summary>
+        /// p minus its projection onto the line q + τ·(eh + el) (eh + el exact), to about a rounding of itself: p − q
+        /// split exactly, eh·τ with its exact rounding error, and what τ's own rounding leaves along the line removed at
+        /// the end (it moves the foot along the line only).
+        /// </summary>
+        private static Vector3D AccuratePerp(Vector3D p, Vector3D q, Vector3D eh, Vector3D el)
+        {
+            ExactDiff(p, q, 1, out var wh, out var wl);
+            double ee = eh.LengthSquared;
+            if (!(ee > 0)) return wh + wl;
+            double tau = Vector3D.Dot(wh, eh) / ee;
+            var r = new Vector3D(PerpPart(wh.X, wl.X, eh.X, el.X, tau), PerpPart(wh.Y, wl.Y, eh.Y, el.Y, tau), PerpPart(wh.Z, wl.Z, eh.Z, el.Z, tau));
+            return r - eh * (Vector3D.Dot(r, eh) / ee);
+        }
+
+        /// <summary>(wh + wl) − (eh + el)·τ: the rounded parts' difference is exact where they cancel (Sterbenz).</summary>
+        private static double PerpPart(double wh, double wl, double eh, double el, double tau)
+        {
+            double p = eh * tau;
+            return (wh - p) + ((wl - ProductError(eh, tau, p)) - el * tau);
         }
 
         /// <summary>
