@@ -188,23 +188,86 @@ namespace ProximityLib.Double
         {
             var q = box.ToLocal(p - box.Origin);
             var c = new Vector3D(Num.Clamp(q.X, box.Lo.X, box.Hi.X), Num.Clamp(q.Y, box.Lo.Y, box.Hi.Y), Num.Clamp(q.Z, box.Lo.Z, box.Hi.Z));
-            if (q != c)
-            {
-                // The decision is made in the box frame; the gap is measured in world space from p − origin, which
-                // carries one rounding per component instead of a rotated copy's three.
-                var offset = box.ToWorldOffset(c);
-                var diff = (p - box.Origin) - offset;
-                double d2 = diff.LengthSquared;
-                double d = Math.Sqrt(d2);
-                var normal = d > 0 ? diff * (1 / d) : box.ToWorldOffset(Unit(q - c));
-                inRange = Range.In(d2);
-                return new PointContact(d, d2, box.Origin + offset, normal, 0);
-            }
+            if (q != c) return PointBoxOutside(p, box, q, c, false, out inRange);
 
             double depth = NearestFace(q, box.Lo, box.Hi, box.Planar, out int face);
             inRange = depth >= Range.Lo;
             var onFace = FacePoint(q, box.Lo, box.Hi, face);
             return new PointContact(-depth, 0, box.Origin + box.ToWorldOffset(onFace), box.ToWorldOffset(FaceNormal(face)), 0);
+        }
+
+        /// <summary>
+        /// <see cref="PointBox"/> outside the box, from its box-frame point q and the clamp c: the decision is made in the
+        /// box frame; the gap is measured in world space from p − origin, which carries one rounding per component
+        /// instead of a rotated copy's three. <paramref name="near"/>: the normal from <see cref="NearBoxNormal"/>.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static PointContact PointBoxOutside(Vector3D p, in Box box, Vector3D q, Vector3D c, bool near, out bool inRange)
+        {
+            var offset = box.ToWorldOffset(c);
+            var diff = (p - box.Origin) - offset;
+            double d2 = diff.LengthSquared;
+            // Within 2^-20 of the box point's own magnitude (q's rounding is u of it): out of line, returned directly so
+            // nothing here is kept across the call.
+            if (!near && d2 < NearBox2 * c.LengthSquared) return PointBoxNear(p, box, q, c, out inRange);
+            double d = Math.Sqrt(d2);
+            var normal = d > 0 ? diff * (1 / d) : box.ToWorldOffset(Unit(q - c));
+            if (near) normal = NearBoxNormal(p, box, normal);
+            inRange = Range.In(d2);
+            return new PointContact(d, d2, box.Origin + offset, normal, 0);
+        }
+
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static PointContact PointBoxNear(Vector3D p, in Box box, Vector3D q, Vector3D c, out bool inRange) =>
+            PointBoxOutside(p, box, q, c, true, out inRange);
+
+        /// <summary>(2^-20)²: a point closer to a box than 2^-20 of the box point's magnitude has a residual whose direction is no longer good to 2^-32.</summary>
+        private const double NearBox2 = 9.094947017729282E-13;
+
+        /// <summary>
+        /// The unit normal from a box to a point just outside it (within 2^-20 of the size). The rounded residual turns by
+        /// about u·size/gap there (the point's box-frame coordinates carry u·size), and a sphere pushed out along it
+        /// leaves radius·angle²/2 of overlap (a sphere 1e-13 from an OBB edge: 3e-9). So each box-frame coordinate's
+        /// excess over its slab is formed to about a rounding of itself (<see cref="SlabExcess"/>) and rotated back;
+        /// <paramref name="fallback"/> (the rounded residual's direction) when nothing is left.
+        /// </summary>
+        private static Vector3D NearBoxNormal(Vector3D p, in Box box, Vector3D fallback)
+        {
+            ExactDiff(p, box.Origin, 1, out var wh, out var wl);
+            var r = new Vector3D(SlabExcess(box.X, wh, wl, box.Lo.X, box.Hi.X), SlabExcess(box.Y, wh, wl, box.Lo.Y, box.Hi.Y),
+                SlabExcess(box.Z, wh, wl, box.Lo.Z, box.Hi.Z));
+            return Unit(box.ToWorldOffset(r), fallback);
+        }
+
+        /// <summary>
+        /// x − clamp(x, lo, hi) for x = axis·(wh + wl), to about a rounding of itself: the products with their exact
+        /// errors, summed with exact two-sums before the bound is taken off (a compensated dot product, Ogita–Rump–Oishi).
+        /// </summary>
+        private static double SlabExcess(Vector3D axis, Vector3D wh, Vector3D wl, double lo, double hi)
+        {
+            double above = OffsetFrom(axis, wh, wl, hi);
+            if (above > 0) return above;
+            double below = OffsetFrom(axis, wh, wl, lo);
+            return below < 0 ? below : 0;
+        }
+
+        /// <summary>axis·(wh + wl) − bound to about a rounding of itself.</summary>
+        private static double OffsetFrom(Vector3D axis, Vector3D wh, Vector3D wl, double bound)
+        {
+            double px = axis.X * wh.X, py = axis.Y * wh.Y, pz = axis.Z * wh.Z;
+            double err = ProductError(axis.X, wh.X, px) + ProductError(axis.Y, wh.Y, py) + ProductError(axis.Z, wh.Z, pz);
+            double s = TwoSum(px, py, ref err);
+            s = TwoSum(s, pz, ref err);
+            s = TwoSum(s, -bound, ref err);
+            return s + (err + Vector3D.Dot(axis, wl));
+        }
+
+        /// <summary>a + b rounded, its exact rounding error added to <paramref name="err"/> (Knuth).</summary>
+        private static double TwoSum(double a, double b, ref double err)
+        {
+            double s = a + b, bv = s - a, av = s - bv;
+            err += (a - av) + (b - bv);
+            return s;
         }
 
         /// <summary>The distance of <see cref="PointSegment"/> alone, from the same operations (so the same bits) and the same <paramref name="inRange"/>.</summary>
