@@ -100,6 +100,16 @@ namespace ProximityTests.Pairs
                     Assert.That(d, Is.LessThan(0), $"case {i}: {x} vs {y}");
                     Assert.That(Math.Abs(after), Is.LessThanOrEqualTo(tol), $"case {i} (gap {h:G1}): {x} vs {y} moved by PointB − PointA is {after:R} from touching");
                 }
+                // The normal's exact steps scale: inputs scaled by 2^-440 and 2^400 give the same witnesses scaled.
+                if (a is Capsule3 ca && b is Capsule3 cb)
+                    foreach (int e in new[] { -440, 400 })
+                    {
+                        double f = Math.ScaleB(1, e);
+                        var r = ClosestDistance.Between(ca, cb);
+                        var rs = ClosestDistance.Between(new Capsule3(ca.Start * f, ca.End * f, ca.Radius * f), new Capsule3(cb.Start * f, cb.End * f, cb.Radius * f));
+                        Assert.That(rs.PointA, Is.EqualTo(r.PointA * f), $"case {i}, 2^{e}");
+                        Assert.That(rs.PointB, Is.EqualTo(r.PointB * f), $"case {i}, 2^{e}");
+                    }
             }
         }
     }

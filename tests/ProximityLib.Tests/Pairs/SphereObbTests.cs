@@ -50,9 +50,10 @@ namespace ProximityTests.Pairs
                 var half = new Vector3D(0.5, 0.4, 0.3);
                 object a, b;
                 Vector3D ax, ay, az;
+                var q = default(System.Numerics.Quaternion);
                 if (dim == 3)
                 {
-                    var q = System.Numerics.Quaternion.Normalize(new System.Numerics.Quaternion((float)rnd.NextDouble(), (float)rnd.NextDouble(), (float)rnd.NextDouble(), 1f));
+                    q = System.Numerics.Quaternion.Normalize(new System.Numerics.Quaternion((float)rnd.NextDouble(), (float)rnd.NextDouble(), (float)rnd.NextDouble(), 1f));
                     var box = Obb3.FromQuaternion(c, q.X, q.Y, q.Z, q.W, half);
                     ax = box.AxisX; ay = box.AxisY; az = box.AxisZ;
                     b = box;
@@ -82,6 +83,17 @@ namespace ProximityTests.Pairs
                     Assert.That((double)r.Distance, Is.LessThan(0), $"case {i}: {x} vs {y}");
                     Assert.That(Math.Abs(after), Is.LessThanOrEqualTo(tol), $"case {i} (gap {h:G1}): {x} vs {y} moved by PointB − PointA is {after:R} from touching");
                 }
+                // The normal's exact steps scale: inputs scaled by 2^-440 and 2^400 give the same witnesses scaled (the box
+                // rebuilt from the same quaternion: the axes constructor would re-orthonormalise them).
+                if (a is Sphere sp && b is Obb3 ob)
+                    foreach (int e in new[] { -440, 400 })
+                    {
+                        double f = Math.ScaleB(1, e);
+                        var r = ClosestDistance.Between(sp, ob);
+                        var rs = ClosestDistance.Between(new Sphere(sp.Center * f, sp.Radius * f), Obb3.FromQuaternion(ob.Center * f, q.X, q.Y, q.Z, q.W, ob.HalfExtents * f));
+                        Assert.That(rs.PointA, Is.EqualTo(r.PointA * f), $"case {i}, 2^{e}");
+                        Assert.That(rs.PointB, Is.EqualTo(r.PointB * f), $"case {i}, 2^{e}");
+                    }
             }
         }
     }

@@ -210,7 +210,7 @@ namespace ProximityLib.Double
             if (!near && d2 < NearBox2 * c.LengthSquared) return PointBoxNear(p, box, q, c, out inRange);
             double d = Math.Sqrt(d2);
             var normal = d > 0 ? diff * (1 / d) : box.ToWorldOffset(Unit(q - c));
-            if (near) normal = NearBoxNormal(p, box, normal);
+            if (near) normal = NearBoxNormal(p, box, c, normal);
             inRange = Range.In(d2);
             return new PointContact(d, d2, box.Origin + offset, normal, 0);
         }
@@ -229,11 +229,15 @@ namespace ProximityLib.Double
         /// excess over its slab is formed to about a rounding of itself (<see cref="SlabExcess"/>) and rotated back;
         /// <paramref name="fallback"/> (the rounded residual's direction) when nothing is left.
         /// </summary>
-        private static Vector3D NearBoxNormal(Vector3D p, in Box box, Vector3D fallback)
+        private static Vector3D NearBoxNormal(Vector3D p, in Box box, Vector3D c, Vector3D fallback)
         {
-            ExactDiff(p, box.Origin, 1, out var wh, out var wl);
-            var r = new Vector3D(SlabExcess(box.X, wh, wl, box.Lo.X, box.Hi.X), SlabExcess(box.Y, wh, wl, box.Lo.Y, box.Hi.Y),
-                SlabExcess(box.Z, wh, wl, box.Lo.Z, box.Hi.Z));
+            // Scaled by k, a power of two near 1/|c| (exact), so the error terms stay clear of underflow and 2^j-scaled
+            // inputs give the same direction, bit for bit.
+            double k = Num.InversePowerOfTwo(Range.MaxAbs(c));
+            ExactDiff(p, box.Origin, k, out var wh, out var wl);
+            Vector3D lo = box.Lo * k, hi = box.Hi * k;
+            var r = new Vector3D(SlabExcess(box.X, wh, wl, lo.X, hi.X), SlabExcess(box.Y, wh, wl, lo.Y, hi.Y),
+                SlabExcess(box.Z, wh, wl, lo.Z, hi.Z));
             return Unit(box.ToWorldOffset(r), fallback);
         }
 

@@ -240,12 +240,12 @@ namespace ProximityLib.Double
                 if (g < 0) return Crossing2(a, ra, b, rb, g, axis, aFlat);
                 // Touching axes have no residual: the separating axis orients the push (A lies on its + side).
                 n = !meet ? v * (1 / v.Length) : (axis != default ? -axis : Vector3D.UnitX);
-                if (!meet && dist < reach * NearAxes) n = NearAxesNormal(a, b0, b1, s, t, true, n);
+                if (!meet && dist < reach * NearAxes) n = NearAxesNormal(a, b0, b1, s, t, true, Num.InversePowerOfTwo(reach), n);
             }
             else if (!meet)
             {
                 n = v * (1 / v.Length);
-                if (dist < reach * NearAxes) n = NearAxesNormal(a, b0, b1, s, t, false, n);
+                if (dist < reach * NearAxes) n = NearAxesNormal(a, b0, b1, s, t, false, Num.InversePowerOfTwo(reach), n);
             }
             else
             {
@@ -275,15 +275,17 @@ namespace ProximityLib.Double
         /// interior point, the end's perpendicular to the other line (<see cref="AccuratePerp"/>); two ends, their
         /// exact difference. Turned to agree with <paramref name="residual"/> (its direction is right to far better
         /// than a right angle), which is also the answer when the features give nothing (parallel interiors; in the
-        /// plane, two interior points apart are parallel ones).
+        /// plane, two interior points apart are parallel ones). Differences are scaled by k (a power of two near 1/reach)
+        /// as they are split, so the products' error terms stay clear of underflow and 2^j-scaled inputs give the same
+        /// direction, bit for bit.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static Vector3D NearAxesNormal(in Linear a, Vector3D b0, Vector3D b1, double s, double t, bool planar, Vector3D residual)
+        private static Vector3D NearAxesNormal(in Linear a, Vector3D b0, Vector3D b1, double s, double t, bool planar, double k, Vector3D residual)
         {
             bool sIn = s > a.Lo && s < a.Hi, tIn = t > 0 && t < 1;
             Vector3D eh, el, r;
-            if (a.IsSegment) ExactDiff(a.End, a.Start, 1, out eh, out el);
-            else { eh = a.Dir; el = default; }
+            if (a.IsSegment) ExactDiff(a.End, a.Start, k, out eh, out el);
+            else { eh = a.Dir * Num.InversePowerOfTwo(Range.MaxAbs(a.Dir)); el = default; }
             if (sIn && tIn)
             {
                 if (planar) return residual;
@@ -293,18 +295,18 @@ namespace ProximityLib.Double
                 // Nearly parallel interiors: the common normal is noise; the residual is as good as anything here.
                 r = c.LengthSquared > 1e-20 ? c : default;
             }
-            else if (sIn) r = -AccuratePerp(t <= 0 ? b0 : b1, a.Start, eh, el);
+            else if (sIn) r = -AccuratePerp(t <= 0 ? b0 : b1, a.Start, k, eh, el);
             else
             {
                 var p = s <= a.Lo ? a.Start : a.End;
                 if (tIn)
                 {
-                    ExactDiff(b1, b0, 1, out var fh, out var fl);
-                    r = AccuratePerp(p, b0, fh, fl);
+                    ExactDiff(b1, b0, k, out var fh, out var fl);
+                    r = AccuratePerp(p, b0, k, fh, fl);
                 }
                 else
                 {
-                    ExactDiff(t <= 0 ? b0 : b1, p, 1, out var h, out var l);
+                    ExactDiff(t <= 0 ? b0 : b1, p, k, out var h, out var l);
                     r = h + l;
                 }
             }
@@ -313,13 +315,13 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
-        /// p minus its projection onto the line q + τ·(eh + el) (eh + el exact), to about a rounding of itself: p − q
-        /// split exactly, eh·τ with its exact rounding error, and what τ's own rounding leaves along the line removed at
-        /// the end (it moves the foot along the line only).
+        /// (p minus its projection onto the line q + τ·(eh + el))·k, for eh + el exact and k a power of two, to about a
+        /// rounding of itself: (p − q)·k split exactly, eh·τ with its exact rounding error, and what τ's own rounding
+        /// leaves along the line removed at the end (it moves the foot along the line only).
         /// </summary>
-        private static Vector3D AccuratePerp(Vector3D p, Vector3D q, Vector3D eh, Vector3D el)
+        private static Vector3D AccuratePerp(Vector3D p, Vector3D q, double k, Vector3D eh, Vector3D el)
         {
-            ExactDiff(p, q, 1, out var wh, out var wl);
+            ExactDiff(p, q, k, out var wh, out var wl);
             double ee = eh.LengthSquared;
             if (!(ee > 0)) return wh + wl;
             double tau = Vector3D.Dot(wh, eh) / ee;
