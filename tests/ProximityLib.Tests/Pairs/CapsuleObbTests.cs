@@ -3,6 +3,7 @@ using System.Linq;
 using NUnit.Framework;
 using ProximityLib.Double;
 using ProximityReference;
+using ProximityTests.Support;
 using static ProximityTests.Pairs.HalfSpaceBoxChecks;
 using static ProximityTests.Support.Expect;
 using Flt = ProximityLib;
@@ -56,6 +57,52 @@ namespace ProximityTests.Pairs
             }
             TestContext.Out.WriteLine($"CapsuleObb worst E (permuted axes, exact) = {worst:F3}");
             Assert.That(worst, Is.LessThanOrEqualTo(32));
+        }
+
+        /// <summary>
+        /// Capsule axes 1e-9 … 1e-15 from a rotated box's or an AABB's edge (crossing it, or ending beside it): the
+        /// capsule moved by PointB − PointA must touch the box to within 64 u·S, checked exactly. The axis's box-frame
+        /// coordinates carry u·S, so the rounded residual's direction is off by u·S/gap: it left up to 4e-4 of overlap.
+        /// Modes: 0 OBB crossing, 1 OBB ending, 2 AABB crossing.
+        /// </summary>
+        [TestCase(0)]
+        [TestCase(1)]
+        [TestCase(2)]
+        public void AxesNearAnEdgePushOutToTouching(int mode)
+        {
+            var rnd = new Random(31 + mode);
+            Vector3D U(Vector3D v) => v * (1 / v.Length);
+            for (int i = 0; i < 70; i++)
+            {
+                double h = Math.Pow(10, -9 - i % 7);
+                var c = new Vector3D(rnd.NextDouble() * 3, rnd.NextDouble() * 3, rnd.NextDouble() * 3);
+                var half = new Vector3D(0.5, 0.4, 0.3);
+                Vector3D ax = Vector3D.UnitX, ay = Vector3D.UnitY, az = Vector3D.UnitZ;
+                object box;
+                if (mode == 2) box = new Aabb3(c - half, c + half);
+                else
+                {
+                    var q = System.Numerics.Quaternion.Normalize(new System.Numerics.Quaternion((float)rnd.NextDouble(), (float)rnd.NextDouble(), (float)rnd.NextDouble(), 1f));
+                    var obb = Obb3.FromQuaternion(c, q.X, q.Y, q.Z, q.W, half);
+                    ax = obb.AxisX; ay = obb.AxisY; az = obb.AxisZ;
+                    box = obb;
+                }
+                var onEdge = c + ax * half.X + ay * half.Y + az * 0.1;
+                var away = U(ax * (0.3 + rnd.NextDouble()) + ay * (0.3 + rnd.NextDouble()));
+                var start = onEdge + away * h;
+                var along = U(Vector3D.Cross(away, az) + az * 0.1);
+                var cap = mode == 1 ? new Capsule3(start, start + U(away + az * 0.2) * 0.5, 0.2) : new Capsule3(start - along * 0.5, start + along * 0.5, 0.2);
+                var ra = RShape.FromAny(cap);
+                var rb = RShape.FromAny(box);
+                double tol = 64 * Exactly.U * Exact.Scale(ra, rb);
+                foreach (var (x, y, rx, ry) in new[] { ((object)cap, box, ra, rb), (box, cap, rb, ra) })
+                {
+                    var r = Api.Between(x, y);
+                    double after = Exact.SignedDistance(rx.Translated(RVec.From((Vector3D)r.PointB) - RVec.From((Vector3D)r.PointA)), ry).ToDouble();
+                    Assert.That((double)r.Distance, Is.LessThan(0), $"case {i}: {x} vs {y}");
+                    Assert.That(Math.Abs(after), Is.LessThanOrEqualTo(tol), $"case {i} (gap {h:G1}): {x} vs {y} moved by PointB − PointA is {after:R} from touching");
+                }
+            }
         }
     }
 }

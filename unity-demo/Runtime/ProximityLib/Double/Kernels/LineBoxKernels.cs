@@ -155,6 +155,7 @@ namespace ProximityLib.Double
                     dist = gap - r;
                     // q − e has the components whose squares summed to g: its length is gap.
                     var toward = box.ToWorldOffset(q - e) * (1 / gap);
+                    if (g < NearBox2 * q.LengthSquared) toward = NearCapsuleBoxNormal(a, b, box, t, ld, q, q - e, toward);
                     return new DistanceResult3(dist, dist > 0 ? dist * dist : 0, SegmentPoint(a, b, t) + toward * r, box.Origin + box.ToWorldOffset(q), t, 0);
                 }
                 // Apart by the verdict but touching to rounding: the touching branch below.
@@ -178,6 +179,26 @@ namespace ProximityLib.Double
             }
             dist = -depth - r;
             return new DistanceResult3(dist, dist > 0 ? dist * dist : 0, onAxis - outward * r, onBox, t, 0);
+        }
+
+        /// <summary>
+        /// The unit normal from a capsule's axis to a box it nearly touches (within 2^-20 of the box point's magnitude):
+        /// the rounded residual turns by about u·size/gap there, and the radius pushed along it leaves radius·angle²/2 of
+        /// overlap (an axis crossing an edge 1e-13 away: 2e-8). An end of the axis: the point's normal
+        /// (<see cref="NearBoxNormal"/>). An interior point against a face: the residual, along one box axis, is exact.
+        /// Against an edge (the vertex, in the plane): the common normal of the axis and the edge's box axis, turned to
+        /// agree with the residual. Against a vertex in 3D: the residual (not yet formed exactly).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static Vector3D NearCapsuleBoxNormal(Vector3D a, Vector3D b, in Box box, double t, Vector3D ld, Vector3D q, Vector3D local, Vector3D toward)
+        {
+            if (!(t > 0 && t < 1)) return -NearBoxNormal(t <= 0 ? a : b, box, q, -toward); // that one points from the box
+            int free = (local.X == 0 ? 1 : 0) + (local.Y == 0 ? 1 : 0) + (local.Z == 0 ? 1 : 0);
+            if (free != 1) return toward;
+            var axis = local.X == 0 ? Vector3D.UnitX : (local.Y == 0 ? Vector3D.UnitY : Vector3D.UnitZ);
+            var n = Vector3D.Cross(ld * Num.InversePowerOfTwo(Range.MaxAbs(ld)), axis);
+            if (Vector3D.Dot(n, local) < 0) n = -n;
+            return Unit(box.ToWorldOffset(n), toward);
         }
 
         /// <summary>Whether a capsule meets a solid box: the axis does (the segment test), or its gap is at most r (as <see cref="CapsuleBox"/> decides).</summary>
