@@ -153,7 +153,7 @@ namespace ProximityLib.Double
                     dist = gap - r;
                     // q − e has the components whose squares summed to g: its length is gap.
                     var toward = box.ToWorldOffset(q - e) * (1 / gap);
-                    if (g < NearBox2 * q.LengthSquared) toward = NearCapsuleBoxNormal(a, b, box, t, ld, q, q - e, toward);
+                    if (g < NearTouch2 * q.LengthSquared) toward = NearCapsuleBoxNormal(a, b, box, t, ld, q, q - e, toward);
                     return new DistanceResult3(dist, dist > 0 ? dist * dist : 0, SegmentPoint(a, b, t) + toward * r, box.Origin + box.ToWorldOffset(q), t, 0);
                 }
                 // Apart by the verdict but touching to rounding: the touching branch below.

@@ -514,8 +514,14 @@ namespace ProximityLib.Double
             return best;
         }
 
-        /// <summary>Scaled gaps below 2^-20 ask which facet separates (above it the residual's direction is within 2^-32).</summary>
+        /// <summary>
+        /// 2^-20: gaps below this fraction of the size are near touching, where a rounded residual's direction is no longer
+        /// good to 2^-32 and the near-touch normals are formed from exact inputs (here: ask which facet separates).
+        /// </summary>
         private const double NearTouch = 9.5367431640625E-07;
+
+        /// <summary>NearTouch², for comparing squared gaps.</summary>
+        private const double NearTouch2 = NearTouch * NearTouch;
 
         /// <summary>2^-48 of the scaled size: a facet whose gap is this close to the distance is the pair's normal.</summary>
         private const double FacetSlack = 3.552713678800501E-15;

@@ -240,12 +240,12 @@ namespace ProximityLib.Double
                 if (g < 0) return Crossing2(a, ra, b, rb, g, axis, aFlat);
                 // Touching axes have no residual: the separating axis orients the push (A lies on its + side).
                 n = !meet ? v * (1 / v.Length) : (axis != default ? -axis : Vector3D.UnitX);
-                if (!meet && dist < reach * NearAxes) n = NearAxesNormal(a, b0, b1, s, t, true, Num.InversePowerOfTwo(reach), n);
+                if (!meet && dist < reach * NearTouch) n = NearAxesNormal(a, b0, b1, s, t, true, Num.InversePowerOfTwo(reach), n);
             }
             else if (!meet)
             {
                 n = v * (1 / v.Length);
-                if (dist < reach * NearAxes) n = NearAxesNormal(a, b0, b1, s, t, false, Num.InversePowerOfTwo(reach), n);
+                if (dist < reach * NearTouch) n = NearAxesNormal(a, b0, b1, s, t, false, Num.InversePowerOfTwo(reach), n);
             }
             else
             {
@@ -263,9 +263,6 @@ namespace ProximityLib.Double
             double d = dist - r;
             return new DistanceResult3(d, d > 0 ? d * d : 0, pa + n * ra, pb - n * rb, s, t);
         }
-
-        /// <summary>Axes closer than 2^-20 of their reach: the residual's direction is no longer good to 2^-32.</summary>
-        private const double NearAxes = 9.5367431640625E-07;
 
         /// <summary>
         /// The unit normal from axis A to segment [b0, b1] when they nearly touch (the closest pair at a, s and the

@@ -209,7 +209,7 @@ namespace ProximityLib.Double
             double d2 = diff.LengthSquared;
             // Within 2^-20 of the box point's own magnitude (q's rounding is u of it): out of line, returned directly so
             // nothing here is kept across the call.
-            if (!near && d2 < NearBox2 * c.LengthSquared) return PointBoxNear(p, box, q, c, out inRange);
+            if (!near && d2 < NearTouch2 * c.LengthSquared) return PointBoxNear(p, box, q, c, out inRange);
             double d = Math.Sqrt(d2);
             var normal = d > 0 ? diff * (1 / d) : box.ToWorldOffset(Unit(q - c));
             if (near) normal = NearBoxNormal(p, box, c, normal);
@@ -217,12 +217,10 @@ namespace ProximityLib.Double
             return new PointContact(d, d2, box.Origin + offset, normal, 0);
         }
 
+        /// <summary><see cref="PointBoxOutside"/> with the near-touch normal, out of line (rare).</summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static PointContact PointBoxNear(Vector3D p, in Box box, Vector3D q, Vector3D c, out bool inRange) =>
             PointBoxOutside(p, box, q, c, true, out inRange);
-
-        /// <summary>(2^-20)²: a point closer to a box than 2^-20 of the box point's magnitude has a residual whose direction is no longer good to 2^-32.</summary>
-        private const double NearBox2 = 9.094947017729282E-13;
 
         /// <summary>
         /// The unit normal from a box to a point just outside it (within 2^-20 of the size). The rounded residual turns by
