@@ -70,6 +70,7 @@ namespace ProximityTests.Fuzz
         [TestCase(112, 2000000226348)]
         [TestCase(112, 2000000010368)]
         [TestCase(112, 2000000423716)]
+        [TestCase(112, 1000000343549)]
         [TestCase(114, 2000000349767)]
         [TestCase(114, 2000000962814)]
         public void CasesTheLongModeFoundKeepEveryInvariant(long seed, long index)

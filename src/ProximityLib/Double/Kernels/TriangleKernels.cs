@@ -60,6 +60,24 @@ namespace ProximityLib.Double
             (b - a).LengthSquared + (c - a).LengthSquared + (p - a).LengthSquared + (q - a).LengthSquared;
     }
 
+    /// <summary>A segment's ends and a triangle's vertices as given, before any shift of frame.</summary>
+    internal readonly struct TriangleInputs
+    {
+        public readonly Vector3D P0, P1, A, B, C;
+
+        public TriangleInputs(Vector3D p0, Vector3D p1, Vector3D a, Vector3D b, Vector3D c)
+        {
+            P0 = p0; P1 = p1; A = a; B = b; C = c;
+        }
+
+        /// <summary>Edge i of the triangle (0: A→B, 1: B→C, 2: C→A), as <see cref="TriFrame.Edge"/>.</summary>
+        public void Edge(int i, out Vector3D from, out Vector3D to)
+        {
+            from = i == 0 ? A : (i == 1 ? B : C);
+            to = i == 0 ? B : (i == 1 ? C : A);
+        }
+    }
+
     internal static partial class Kernels
     {
         // ---- Exact products (Dekker): the same bits on every runtime, no fused multiply-add needed (shared with the linear kernels) ----
@@ -438,6 +456,8 @@ namespace ProximityLib.Double
         public static DistanceResult3 CapsuleTriangle(Vector3D p0, Vector3D p1, double radius, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
         {
             // In the frame of a, so a translation adds no error (see TriangleTriangle); the witnesses move back at the end.
+            // The given inputs are kept: a near-touch normal is formed from them (the shift rounds each by u·S).
+            var given = new TriangleInputs(p0, p1, a, b, c);
             var o = a;
             a = default; b -= o; c -= o; p0 -= o; p1 -= o;
             double size2 = TriFrame.Size2(a, b, c, p0, p1);
@@ -447,7 +467,7 @@ namespace ProximityLib.Double
             if (g > 0)
             {
                 double dist = Math.Sqrt(g);
-                var away = dist * f.K < NearTouch ? NearTouchDirection(p0, p1, f, dist, s, onSeg, onTri)
+                var away = dist * f.K < NearTouch ? NearTouchDirection(p0, p1, f, dist, s, onSeg, onTri, given)
                     : Unit(onSeg - onTri, f.Flat ? FlatPushDirection(p1 - p0, f) : f.Unit);
                 return Inflated(dist, onSeg + o, onTri + o, away, s, radius);
             }
@@ -463,33 +483,87 @@ namespace ProximityLib.Double
         /// The unit direction that moves segment [p0, p1] away from a triangle it nearly touches (scaled gap dist·K below
         /// 2^-20). There the residual onSeg − onTri is mostly rounding: its direction turns by about u·S/dist, and pushing
         /// a capsule out along a turned direction leaves radius·angle²/2 of overlap (an axis along an edge 2e-15 away:
-        /// 5e-8). So: when a facet of the Minkowski difference separates by nearly dist, the pair's normal is that facet's,
-        /// formed from exact differences (moving along any direction that separates by dist − δ loses at most δ). Else the
-        /// normal cone is wide and only the residual's parts along a feature the exact residual is perpendicular to (the
-        /// segment, at an interior point; a triangle edge, at an interior point of it) turn it out of the cone: removed.
+        /// 5e-8). So: when a facet of the Minkowski difference separates by nearly dist (the plane's normal, or the common
+        /// normal of the segment and an edge), the pair's normal is that facet's, formed from exact differences (moving
+        /// along any direction that separates by dist − δ loses at most δ). Else the pair is held by an end, or by the
+        /// segment's interior against a vertex, and the normal is formed from the <paramref name="given"/> inputs (the
+        /// frame's are rounded by the shift to A, which alone turns it by u·S/dist): an end against the triangle, its
+        /// exact vector from the nearest edge (<see cref="EdgeVector"/>; the plane's normal over the face); the interior
+        /// against a vertex, the vertex's perpendicular to the segment's line. Nearly parallel interiors, which have no
+        /// facet: the residual less its parts along both. Turned to agree with the residual, whose direction is right to
+        /// far better than a right angle.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static Vector3D NearTouchDirection(Vector3D p0, Vector3D p1, in TriFrame f, double dist, double s, Vector3D onSeg, Vector3D onTri)
+        private static Vector3D NearTouchDirection(Vector3D p0, Vector3D p1, in TriFrame f, double dist, double s, Vector3D onSeg, Vector3D onTri, in TriangleInputs given)
         {
             double best = f.Flat ? FlatPush(p0, p1, f, out var facet) : PrismPush(p0, p1, f, out facet);
             if (facet != default && -best >= dist * f.K - FacetSlack) return facet;
             var r = onSeg - onTri;
             var d = p1 - p0;
-            double dd = d.LengthSquared;
-            if (s > 0 && s < 1 && dd > 0) r -= d * (Vector3D.Dot(r, d) / dd);
-            double near2 = dist * dist * 9.094947017729282E-13; // (2^-20·dist)²
-            for (int i = 0; i < 3; i++)
+            double dd = d.LengthSquared, k = f.K;
+            var fallback = f.Flat ? FlatPushDirection(d, f) : f.Unit;
+            var n = default(Vector3D);
+            if (!(s > 0 && s < 1 && dd > 0))
             {
-                f.Edge(i, out var v0, out var v1);
-                // onTri at the interior point of edge i nearest to onSeg (to 2^-20 of the gap): r is perpendicular to it.
-                var re = PointSegmentResidual(onSeg, v0, v1, out double t, out double ee);
-                if (t > 0 && t < 1 && ee > 0 && (r - re).LengthSquared <= near2)
+                var end = s <= 0 ? given.P0 : given.P1;
+                if (!f.Flat && f.Inside(s <= 0 ? p0 : p1)) n = f.Unit;
+                else
                 {
-                    var e = v1 - v0;
-                    r -= e * (Vector3D.Dot(r, e) / ee);
+                    // The nearest edge by exact vectors: the rounded distances can pick the wrong one of a flat
+                    // triangle's nearly collinear edges (they differ by u·S; their normals there by u·S/dist).
+                    double least = double.PositiveInfinity;
+                    for (int i = 0; i < 3; i++)
+                    {
+                        given.Edge(i, out var w0, out var w1);
+                        var v = EdgeVector(end, w0, w1, k);
+                        double vv = v.LengthSquared;
+                        if (vv < least) { least = vv; n = v; }
+                    }
                 }
             }
-            return Unit(r, f.Flat ? FlatPushDirection(d, f) : f.Unit);
+            else
+            {
+                r -= d * (Vector3D.Dot(r, d) / dd);
+                // onTri at a vertex (to rounding): the vertex's perpendicular to the segment's line; else nearly
+                // parallel interiors (a facet would have separated otherwise): r less its part along that edge.
+                double tol = 2.0 * (dist * NearTouch + 1.4210854715202004E-14 * (Range.MaxAbs(onSeg) + Range.MaxAbs(onTri))); // 2^-46
+                for (int i = 0; i < 3; i++)
+                {
+                    f.Edge(i, out var v0, out var v1);
+                    if (Range.MaxAbs(onTri - v0) <= tol)
+                    {
+                        given.Edge(i, out var w0, out _);
+                        ExactDiff(given.P1, given.P0, k, out var dh, out var dl);
+                        n = -AccuratePerp(w0, given.P0, k, dh, dl);
+                        break;
+                    }
+                    var re = PointSegmentResidual(onSeg, v0, v1, out double t, out double ee);
+                    if (t > 0 && t < 1 && ee > 0 && Range.MaxAbs(onSeg - onTri - re) <= tol)
+                    {
+                        var e = v1 - v0;
+                        n = r - e * (Vector3D.Dot(r, e) / ee);
+                        break;
+                    }
+                }
+            }
+            var u = Unit(n, Unit(r, fallback));
+            return Vector3D.Dot(u, r) < 0 ? -u : u;
+        }
+
+        /// <summary>
+        /// (p − its nearest point on segment [w0, w1])·k, for a power of two k, to about a rounding of itself: p's
+        /// perpendicular to the line (<see cref="AccuratePerp"/>) when its foot falls inside, else the exact difference to
+        /// the nearer end, the foot placed by compensated dot products (wrong only within u² of an end, where the two
+        /// agree to u²).
+        /// </summary>
+        private static Vector3D EdgeVector(Vector3D p, Vector3D w0, Vector3D w1, double k)
+        {
+            ExactDiff(w1, w0, k, out var eh, out var el);
+            ExactDiff(p, w0, k, out var ah, out var al);
+            if (!(OffsetFrom(eh, ah, al, 0) + Vector3D.Dot(el, ah) > 0)) return ah + al;
+            ExactDiff(p, w1, k, out var bh, out var bl);
+            if (!(OffsetFrom(eh, bh, bl, 0) + Vector3D.Dot(el, bh) < 0)) return bh + bl;
+            return AccuratePerp(p, w0, k, eh, el);
         }
 
         /// <summary>
