@@ -60,14 +60,16 @@ namespace ProximityTests.Pairs
         }
 
         /// <summary>
-        /// Capsule axes 1e-9 … 1e-15 from a rotated box's or an AABB's edge (crossing it, or ending beside it): the
-        /// capsule moved by PointB − PointA must touch the box to within 64 u·S, checked exactly. The axis's box-frame
-        /// coordinates carry u·S, so the rounded residual's direction is off by u·S/gap: it left up to 4e-4 of overlap.
-        /// Modes: 0 OBB crossing, 1 OBB ending, 2 AABB crossing.
+        /// Capsule axes 1e-9 … 1e-15 from a rotated box's or an AABB's edge (crossing it, or ending beside it) or vertex
+        /// (passing it): the capsule moved by PointB − PointA must touch the box to within 64 u·S, checked exactly. The
+        /// axis's box-frame coordinates carry u·S, so the rounded residual's direction is off by u·S/gap: it left up to
+        /// 4e-4 of overlap. Modes: 0 OBB crossing, 1 OBB ending, 2 AABB crossing, 3 OBB vertex, 4 AABB vertex.
         /// </summary>
         [TestCase(0)]
         [TestCase(1)]
         [TestCase(2)]
+        [TestCase(3)]
+        [TestCase(4)]
         public void AxesNearAnEdgePushOutToTouching(int mode)
         {
             var rnd = new Random(31 + mode);
@@ -79,7 +81,7 @@ namespace ProximityTests.Pairs
                 var half = new Vector3D(0.5, 0.4, 0.3);
                 Vector3D ax = Vector3D.UnitX, ay = Vector3D.UnitY, az = Vector3D.UnitZ;
                 object box;
-                if (mode == 2) box = new Aabb3(c - half, c + half);
+                if (mode == 2 || mode == 4) box = new Aabb3(c - half, c + half);
                 else
                 {
                     var q = System.Numerics.Quaternion.Normalize(new System.Numerics.Quaternion((float)rnd.NextDouble(), (float)rnd.NextDouble(), (float)rnd.NextDouble(), 1f));
@@ -87,11 +89,23 @@ namespace ProximityTests.Pairs
                     ax = obb.AxisX; ay = obb.AxisY; az = obb.AxisZ;
                     box = obb;
                 }
-                var onEdge = c + ax * half.X + ay * half.Y + az * 0.1;
-                var away = U(ax * (0.3 + rnd.NextDouble()) + ay * (0.3 + rnd.NextDouble()));
-                var start = onEdge + away * h;
-                var along = U(Vector3D.Cross(away, az) + az * 0.1);
-                var cap = mode == 1 ? new Capsule3(start, start + U(away + az * 0.2) * 0.5, 0.2) : new Capsule3(start - along * 0.5, start + along * 0.5, 0.2);
+                Capsule3 cap;
+                if (mode >= 3)
+                {
+                    // Past the vertex at +half, off it along a direction inside its normal cone, the axis across that direction.
+                    var vertex = c + ax * half.X + ay * half.Y + az * half.Z;
+                    var out3 = U(ax * (0.3 + rnd.NextDouble()) + ay * (0.3 + rnd.NextDouble()) + az * (0.3 + rnd.NextDouble()));
+                    var across = U(Vector3D.Cross(out3, new Vector3D(rnd.NextDouble() - 0.5, rnd.NextDouble() - 0.5, rnd.NextDouble() - 0.5)));
+                    cap = new Capsule3(vertex + out3 * h - across * 0.4, vertex + out3 * h + across * 0.5, 0.2);
+                }
+                else
+                {
+                    var onEdge = c + ax * half.X + ay * half.Y + az * 0.1;
+                    var away = U(ax * (0.3 + rnd.NextDouble()) + ay * (0.3 + rnd.NextDouble()));
+                    var start = onEdge + away * h;
+                    var along = U(Vector3D.Cross(away, az) + az * 0.1);
+                    cap = mode == 1 ? new Capsule3(start, start + U(away + az * 0.2) * 0.5, 0.2) : new Capsule3(start - along * 0.5, start + along * 0.5, 0.2);
+                }
                 var ra = RShape.FromAny(cap);
                 var rb = RShape.FromAny(box);
                 double tol = 64 * Exactly.U * Exact.Scale(ra, rb);

@@ -317,6 +317,14 @@ namespace ProximityLib.Double
         private static Vector3D AccuratePerp(Vector3D p, Vector3D q, double k, Vector3D eh, Vector3D el)
         {
             ExactDiff(p, q, k, out var wh, out var wl);
+            return PerpOfDifference(wh, wl, eh, el);
+        }
+
+        /// <summary>
+        /// <see cref="AccuratePerp"/> from the difference wh + wl (to about u² of itself) instead of two points.
+        /// </summary>
+        private static Vector3D PerpOfDifference(Vector3D wh, Vector3D wl, Vector3D eh, Vector3D el)
+        {
             double ee = eh.LengthSquared;
             if (!(ee > 0)) return wh + wl;
             double tau = Vector3D.Dot(wh, eh) / ee;

@@ -187,18 +187,50 @@ namespace ProximityLib.Double
         /// overlap (an axis crossing an edge 1e-13 away: 2e-8). An end of the axis: the point's normal
         /// (<see cref="NearBoxNormal"/>). An interior point against a face: the residual, along one box axis, is exact.
         /// Against an edge (the vertex, in the plane): the common normal of the axis and the edge's box axis, turned to
-        /// agree with the residual. Against a vertex in 3D: the residual (not yet formed exactly).
+        /// agree with the residual. Against a vertex in 3D: the vertex's perpendicular to the axis's line
+        /// (<see cref="NearVertexNormal"/>).
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static Vector3D NearCapsuleBoxNormal(Vector3D a, Vector3D b, in Box box, double t, Vector3D ld, Vector3D q, Vector3D local, Vector3D toward)
         {
             if (!(t > 0 && t < 1)) return -NearBoxNormal(t <= 0 ? a : b, box, q, -toward); // that one points from the box
             int free = (local.X == 0 ? 1 : 0) + (local.Y == 0 ? 1 : 0) + (local.Z == 0 ? 1 : 0);
+            if (free == 0) return NearVertexNormal(a, b, box, q, toward);
             if (free != 1) return toward;
             var axis = local.X == 0 ? Vector3D.UnitX : (local.Y == 0 ? Vector3D.UnitY : Vector3D.UnitZ);
             var n = Vector3D.Cross(ld * Num.InversePowerOfTwo(Range.MaxAbs(ld)), axis);
             if (Vector3D.Dot(n, local) < 0) n = -n;
             return Unit(box.ToWorldOffset(n), toward);
+        }
+
+        /// <summary>
+        /// The unit normal from the axis through [a, b] to the box vertex at box-local corner c, turned to agree with
+        /// <paramref name="toward"/>: the vertex's perpendicular to the line (<see cref="PerpOfDifference"/>),
+        /// from the vertex's offset from a to about u² of itself: per component, origin − a split exactly and the three
+        /// axis products with their exact errors, summed by two-sums (the rounded vertex alone is off by u·size, which
+        /// turns the normal by u·size/gap). Scaled by k, a power of two near 1/size, as the other near-touch normals are.
+        /// </summary>
+        private static Vector3D NearVertexNormal(Vector3D a, Vector3D b, in Box box, Vector3D c, Vector3D toward)
+        {
+            double k = Num.InversePowerOfTwo(Math.Max(Range.MaxAbs(b - a), Range.MaxAbs(c)));
+            var ck = c * k;
+            VertexOffset(box.Origin.X, a.X, box.X.X, box.Y.X, box.Z.X, ck, k, out double hx, out double lx);
+            VertexOffset(box.Origin.Y, a.Y, box.X.Y, box.Y.Y, box.Z.Y, ck, k, out double hy, out double ly);
+            VertexOffset(box.Origin.Z, a.Z, box.X.Z, box.Y.Z, box.Z.Z, ck, k, out double hz, out double lz);
+            ExactDiff(b, a, k, out var dh, out var dl);
+            var n = Unit(PerpOfDifference(new Vector3D(hx, hy, hz), new Vector3D(lx, ly, lz), dh, dl), toward);
+            return Vector3D.Dot(n, toward) < 0 ? -n : n;
+        }
+
+        /// <summary>One component of (origin + x·c.X + y·c.Y + z·c.Z − a)·k as h + l (c already scaled by k).</summary>
+        private static void VertexOffset(double origin, double a, double x, double y, double z, Vector3D ck, double k, out double h, out double l)
+        {
+            TwoDiff(origin, a, k, out h, out l);
+            double px = x * ck.X, py = y * ck.Y, pz = z * ck.Z;
+            l += ProductError(x, ck.X, px) + ProductError(y, ck.Y, py) + ProductError(z, ck.Z, pz);
+            h = TwoSum(h, px, ref l);
+            h = TwoSum(h, py, ref l);
+            h = TwoSum(h, pz, ref l);
         }
 
         /// <summary>Whether a capsule meets a solid box: the axis does (the segment test), or its gap is at most r (as <see cref="CapsuleBox"/> decides).</summary>
