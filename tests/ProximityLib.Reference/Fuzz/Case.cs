@@ -84,11 +84,27 @@ namespace ProximityReference.Fuzz
         /// <summary>Every pair of the gap space: the original pairs, then the new ones.</summary>
         public static readonly (int Dim, Kind A, Kind B)[] GapPairs = Pairs.Concat(NewPairs).ToArray();
 
+        /// <summary>
+        /// The first index of the fourth index space: nearly touching cores (<see cref="Generators.NearCore"/>) for the
+        /// 110 pairs of <see cref="GapPairs"/> in both precisions, a space of its own so no case of the other three
+        /// changed (replay NearBase + k as SEED:3000000000000+k).
+        /// </summary>
+        public const long NearBase = 3_000_000_000_000;
+
         /// <summary>The pair and precision of an index: in the original space index mod 60 picks one of 30 pairs × 2
         /// precisions; in the new space (index − NewBase) mod 160 one of 80 pairs × 2; in the gap space (index − GapBase)
-        /// mod 110 one of the 110 pairs, double. Consecutive blocks rotate the generators.</summary>
+        /// mod 110 one of the 110 pairs, double; in the near space (index − NearBase) mod 220 one of the 110 pairs × 2.
+        /// Consecutive blocks rotate the generators.</summary>
         public static (int Dim, Kind A, Kind B, bool Float, long Round) Slot(long index)
         {
+            if (index >= NearBase)
+            {
+                long h = index - NearBase;
+                int n2 = GapPairs.Length;
+                int slot = (int)(h % (2 * n2));
+                var (dh, ah, bh) = GapPairs[slot % n2];
+                return (dh, ah, bh, slot >= n2, h / (2 * n2));
+            }
             if (index >= GapBase)
             {
                 long g = index - GapBase;
@@ -121,6 +137,11 @@ namespace ProximityReference.Fuzz
             if (!Available(dim, ka, kb, isFloat))
                 throw new ArgumentException($"case {seed}:{index} is {dim}D {ka}–{kb} ({(isFloat ? "float" : "double")}), which the library has no public overloads for yet");
             var rng = Rng.ForCase(seed, index);
+            if (index >= NearBase)
+            {
+                var (na, nb) = Generators.NearCore(rng, ka, kb, dim, isFloat ? Precision.Single : Precision.Double);
+                return new FuzzCase(seed, index, "near-core", dim, isFloat, na, nb, rng);
+            }
             if (index >= GapBase)
             {
                 var (ga, gb) = Generators.TinyGap(rng, ka, kb, dim, Precision.Double);

@@ -19,6 +19,9 @@ namespace ProximityReference.Fuzz
         /// <summary>Cases of the third index space (exact tiny gaps, every pair in double): FuzzCase.GapBase + GapStart, … (0: none).</summary>
         public long GapStart { get; set; }
         public long GapCount { get; set; }
+        /// <summary>Cases of the fourth index space (nearly touching cores, every pair in both precisions): FuzzCase.NearBase + NearStart, … (0: none).</summary>
+        public long NearStart { get; set; }
+        public long NearCount { get; set; }
         public int Threads { get; set; } = Environment.ProcessorCount;
         /// <summary>Called every few seconds with a progress line.</summary>
         public Action<string>? Progress { get; set; }
@@ -178,19 +181,15 @@ namespace ProximityReference.Fuzz
         public static FuzzReport Run(FuzzOptions o)
         {
             var total = new FuzzReport { Seed = o.Seed, Start = o.Start };
-            var ranges = new List<string>();
-            if (o.Count > 0) ranges.Add($"{o.Start}..{o.Start + o.Count - 1}");
-            if (o.NewCount > 0) ranges.Add($"{FuzzCase.NewBase + o.NewStart}..{FuzzCase.NewBase + o.NewStart + o.NewCount - 1}");
-            if (o.GapCount > 0) ranges.Add($"{FuzzCase.GapBase + o.GapStart}..{FuzzCase.GapBase + o.GapStart + o.GapCount - 1}");
-            total.Ranges = string.Join(" and ", ranges);
+            // The index spaces run, each as (first index, count): the original, the new pairs', the tiny gaps', the near cores'.
+            var spaces = new[] { (o.Start, o.Count), (FuzzCase.NewBase + o.NewStart, o.NewCount), (FuzzCase.GapBase + o.GapStart, o.GapCount), (FuzzCase.NearBase + o.NearStart, o.NearCount) };
+            total.Ranges = string.Join(" and ", spaces.Where(x => x.Item2 > 0).Select(x => $"{x.Item1}..{x.Item1 + x.Item2 - 1}"));
             var clock = Stopwatch.StartNew();
             const int chunk = 60;
-            // Chunks of the original space, then of the new one (chunk k ≥ oldChunks starts at NewBase + NewStart), then
-            // of the gap space (k ≥ newChunks: GapBase + GapStart).
-            long oldChunks = (o.Count + chunk - 1) / chunk;
-            long newChunks = oldChunks + (o.NewCount + chunk - 1) / chunk;
-            long chunks = newChunks + (o.GapCount + chunk - 1) / chunk, next = -1, done = 0;
-            long all = o.Count + o.NewCount + o.GapCount;
+            // Chunks of each space in turn: chunk k belongs to the first space whose cumulative chunk count exceeds k.
+            var ends = new long[spaces.Length];
+            long chunks = 0, next = -1, done = 0, all = 0;
+            for (int j = 0; j < spaces.Length; j++) { chunks += (spaces[j].Item2 + chunk - 1) / chunk; ends[j] = chunks; all += spaces[j].Item2; }
             var gate = new object();
             var lastProgress = clock.Elapsed;
             var workers = Enumerable.Range(0, Math.Max(1, o.Threads)).Select(_ => Task.Factory.StartNew(() =>
@@ -200,20 +199,11 @@ namespace ProximityReference.Fuzz
                 {
                     long k = Interlocked.Increment(ref next);
                     if (k >= chunks) break;
-                    long from, to;
-                    if (k < oldChunks) { from = o.Start + k * chunk; to = Math.Min(o.Start + o.Count, from + chunk); }
-                    else if (k < newChunks)
-                    {
-                        long first = FuzzCase.NewBase + o.NewStart;
-                        from = first + (k - oldChunks) * chunk;
-                        to = Math.Min(first + o.NewCount, from + chunk);
-                    }
-                    else
-                    {
-                        long first = FuzzCase.GapBase + o.GapStart;
-                        from = first + (k - newChunks) * chunk;
-                        to = Math.Min(first + o.GapCount, from + chunk);
-                    }
+                    int space = 0;
+                    while (k >= ends[space]) space++;
+                    var (first, count) = spaces[space];
+                    long from = first + (k - (space == 0 ? 0 : ends[space - 1])) * chunk;
+                    long to = Math.Min(first + count, from + chunk);
                     for (long i = from; i < to; i++)
                     {
                         if (!FuzzCase.Available(i))

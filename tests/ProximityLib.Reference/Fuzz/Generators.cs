@@ -1119,6 +1119,35 @@ namespace ProximityReference.Fuzz
         }
 
         /// <summary>
+        /// Nearly touching cores (the near index space, <see cref="FuzzCase.NearBase"/>): a host in contact at a general
+        /// rotation, the guest's core (a sphere's centre, a capsule's axis; any other kind itself) placed 2^-20…2^-52 of
+        /// the size off the contact along the normal, either side (one in ten: on it); a rounded host is met at its core.
+        /// Rounded shapes then overlap by about their radii (0.05…1 of the size) while their cores nearly touch: the
+        /// push-out must follow the features' normal, where the rounded residual's direction is off by u·S/gap (radius·
+        /// (u·S/gap)²/2 of overlap left), and the other kinds' witnesses and distances sit at rounding-sized gaps.
+        /// </summary>
+        public static (Spec, Spec) NearCore(Rng r, Kind ka, Kind kb, int dim, Precision p)
+        {
+            double s = r.Pow2(-10, 10), g = s / 4;
+            bool hostIsA = r.Chance(0.5);
+            var (host, contact, n) = HostContact(r, hostIsA ? ka : kb, dim, s, g, exact: false);
+            if (host.Kind == Kind.Sphere || host.Kind == Kind.Capsule) contact -= n * host.R;
+            double gap = r.Chance(0.1) ? 0 : r.Sign() * s * Math.ScaleB(1, -r.Int(20, 52));
+            var at = contact + n * gap;
+            var kind = hostIsA ? kb : ka;
+            bool parallel = r.Chance(0.5);
+            Spec guest;
+            if (kind == Kind.Sphere) guest = Spec.Sphere(dim, at, s * r.Range(0.05, 1));
+            else if (kind == Kind.Capsule)
+            {
+                var axis = GuestAt(r, Kind.Segment, dim, at, n, s, g, exact: false, parallel);
+                guest = Spec.Capsule(dim, axis.P, axis.Q, s * r.Range(0.05, 1));
+            }
+            else guest = GuestAt(r, kind, dim, at, n, s, g, exact: false, parallel);
+            return Finish(hostIsA ? host : guest, hostIsA ? guest : host, p);
+        }
+
+        /// <summary>
         /// Grazing contacts with a general rotation: lines and rays tangent to spheres and capsules (sides and caps),
         /// through box edges and vertices, planes through box edges and vertices, shapes at triangle vertices and on
         /// triangle planes — apart or overlapping by 10^0…10^−16 of the size, or touching to rounding.
