@@ -9,9 +9,10 @@ namespace ProximityTests.Fuzz
     /// both dimensions and precisions (all 200 public Between/Overlaps overloads, both argument orders), and the SIMD
     /// batch queries, against the invariants and, on a sample, the exact reference; and issue 12's pairs (lines, rays,
     /// capsules, triangles, half-spaces) in their own index space, each pair from the commit whose overloads add it; and
-    /// exact tiny gaps for all 110 pairs in double (a third space), scaled to where their squares underflow.
-    /// About a minute in Release on two cores. PROXIMITY_FUZZ_SEED, PROXIMITY_FUZZ_CASES, PROXIMITY_FUZZ_NEW_CASES and
-    /// PROXIMITY_FUZZ_GAP_CASES override the seed and the numbers of cases; the long mode is
+    /// exact tiny gaps for all 110 pairs in double (a third space), scaled to where their squares underflow; and nearly
+    /// touching cores for all 110 pairs in both precisions (a fourth space), where push-outs must follow exact normals.
+    /// About a minute in Release on two cores. PROXIMITY_FUZZ_SEED, PROXIMITY_FUZZ_CASES, PROXIMITY_FUZZ_NEW_CASES,
+    /// PROXIMITY_FUZZ_GAP_CASES and PROXIMITY_FUZZ_NEAR_CASES override the seed and the numbers of cases; the long mode is
     /// <c>dotnet run --project tests/ProximityLib.Accuracy -c Release -- --fuzz 2000000 --seed N</c>.
     /// </summary>
     [TestFixture, Category("Fuzz")]
@@ -24,6 +25,8 @@ namespace ProximityTests.Fuzz
         public const long DefaultNewCases = 64_000;
         /// <summary>A multiple of 110: every block of 110 consecutive gap-space cases covers all 110 pairs.</summary>
         public const long DefaultGapCases = 22_000;
+        /// <summary>A multiple of 220: every block of 220 consecutive near-space cases covers all 110 pairs in both precisions.</summary>
+        public const long DefaultNearCases = 22_000;
 
         private static long Setting(string name, long fallback)
         {
@@ -40,7 +43,8 @@ namespace ProximityTests.Fuzz
             long cases = Setting("PROXIMITY_FUZZ_CASES", DefaultCases);
             long newCases = Setting("PROXIMITY_FUZZ_NEW_CASES", DefaultNewCases);
             long gapCases = Setting("PROXIMITY_FUZZ_GAP_CASES", DefaultGapCases);
-            var report = Engine.Run(new FuzzOptions { Seed = seed, Count = cases, NewCount = newCases, GapCount = gapCases, Threads = Environment.ProcessorCount });
+            long nearCases = Setting("PROXIMITY_FUZZ_NEAR_CASES", DefaultNearCases);
+            var report = Engine.Run(new FuzzOptions { Seed = seed, Count = cases, NewCount = newCases, GapCount = gapCases, NearCount = nearCases, Threads = Environment.ProcessorCount });
             string text = report.Format(repros: 20, rows: 120);
             TestContext.Progress.WriteLine($"Fuzz: {report.Cases} cases (seed {seed}; {report.Skipped} skipped: pairs not in the library yet) in " +
                                            $"{report.Elapsed.TotalSeconds:F1} s, {report.FailureCount} violations in {report.FailedCases} cases");
@@ -57,7 +61,18 @@ namespace ProximityTests.Fuzz
         /// was added, each a gap whose square underflowed at a scale inside the fast range and was taken for touching (or, for
         /// triangles overlapping by a tiny depth, picked the wrong just-touching pair): 111:2000000000044 (line–triangle),
         /// 111:2000000000075 (2D segment–line), 111:2000000000173 (triangle–triangle), 111:2000000001093 (2D
-        /// triangle–triangle witnesses), 111:2000000020079 (capsule–triangle).
+        /// triangle–triangle witnesses), 111:2000000020079 (capsule–triangle). From the near space (nearly touching cores),
+        /// each a push-out that left the shapes overlapping because its direction came from a rounded residual or from a
+        /// feature picked by a rounded foot parameter: 1:3000000001623 (2D line–capsule, the line along the axis),
+        /// 1:3000000001198 (2D capsule–capsule), 1:3000000001158 (3D capsule–capsule), 1:3000000002237 (3D
+        /// segment–capsule), 1:3000000005990 (3D ray–capsule), 1:3000000004912 (2D point–capsule, beside the axis end),
+        /// 1:3000000003795 (3D sphere–capsule), 1:3000000003541 (2D segment–circle), 1:3000000008901 (2D capsule–AABB),
+        /// 1:3000000010842 (3D capsule–OBB), 1:3000000000721 and 2:3000000032621 (3D capsule–AABB), 1:3000000003616 (2D
+        /// circle–triangle), 3:3000000033059 (3D capsule–triangle, an end beside a vertex), 5:3000000043422 (2D
+        /// line–circle, 2^-30 of the size: the line's old near threshold was 2^-30 of |p − o|), 3:3000000049966 (2D
+        /// circle–OBB, the centre inside by 2e-14 but outside after rounding: the residual had no direction). And one
+        /// whose witness was off its shape: 7:3000000037270 (2D ray–capsule along the axis, a sliver of a Minkowski
+        /// difference whose face picked by rounding had its foot 0.99 beyond the ray's origin).
         /// </summary>
         [TestCase(11, 280751)]
         [TestCase(11, 1579269)]
@@ -73,6 +88,23 @@ namespace ProximityTests.Fuzz
         [TestCase(112, 1000000343549)]
         [TestCase(114, 2000000349767)]
         [TestCase(114, 2000000962814)]
+        [TestCase(1, 3000000001623)]
+        [TestCase(1, 3000000001198)]
+        [TestCase(1, 3000000001158)]
+        [TestCase(1, 3000000002237)]
+        [TestCase(1, 3000000005990)]
+        [TestCase(1, 3000000004912)]
+        [TestCase(1, 3000000003795)]
+        [TestCase(1, 3000000003541)]
+        [TestCase(1, 3000000008901)]
+        [TestCase(1, 3000000010842)]
+        [TestCase(1, 3000000000721)]
+        [TestCase(2, 3000000032621)]
+        [TestCase(1, 3000000003616)]
+        [TestCase(3, 3000000033059)]
+        [TestCase(5, 3000000043422)]
+        [TestCase(3, 3000000049966)]
+        [TestCase(7, 3000000037270)]
         public void CasesTheLongModeFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = Checker.Run(FuzzCase.Create(seed, index), exact: true);

@@ -109,7 +109,7 @@ namespace ProximityTests.Pairs
         }
 
         /// <summary>
-        /// A capsule whose axis passes a 3D triangle 1e-9..1e-15 away (well above rounding, below 2^-20 of the size), away
+        /// A capsule whose axis passes a 3D triangle 1e-9..1e-15 away (well above rounding, below 2^-26 of the size), away
         /// from the origin: moved by PointB − PointA it must touch, checked exactly. There the rounded residual turns by
         /// u·S/gap, and the kernel's shift to vertex A rounds the inputs by as much, so the push leaves up to
         /// radius·(u·S/gap)²/2 of overlap unless the normal is formed from the given inputs (fuzz 112:1000000343549, an

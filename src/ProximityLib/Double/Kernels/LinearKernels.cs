@@ -30,34 +30,79 @@ namespace ProximityLib.Double
         /// <summary>
         /// Point against a line (or a ray when <paramref name="ray"/>) through o with unit direction d: the projection
         /// parameter t = d·(p − o) (clamped at 0 for a ray) and the residual (p − o) − t·d, formed from differences, so a
-        /// point far along the line loses only u·|p − o|. The push-out normal is formed only when
-        /// <paramref name="withNormal"/>; a residual within the rounding of |p − o| counts as zero (the point is on the line,
-        /// the normal <see cref="AnyPerpendicular"/> of d), and a small one has its part along d removed first (as
-        /// <see cref="PointSegment"/> does). <paramref name="inRange"/>: the squared residual lies in the fast
-        /// range or the residual is exactly zero.
+        /// point far along the line loses only u·|p − o| (<paramref name="w"/> = p − o). <paramref name="inRange"/>: the
+        /// squared residual lies in the fast range or the residual is exactly zero.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static PointContact PointLinear(Vector3D p, Vector3D o, Vector3D d, bool ray, bool withNormal, out bool inRange)
+        private static Vector3D LinearResidual(Vector3D p, Vector3D o, Vector3D d, bool ray, out double t, out Vector3D w, out double r2, out bool inRange)
         {
-            var w = p - o;
-            double t = Vector3D.Dot(w, d);
+            w = p - o;
+            t = Vector3D.Dot(w, d);
             if (ray && t <= 0) t = 0;
             var r = t == 0 ? w : w - d * t;
-            double r2 = r.LengthSquared, dist = Math.Sqrt(r2);
+            r2 = r.LengthSquared;
             inRange = Range.Length2(r, r2);
-            var n = default(Vector3D);
-            if (withNormal)
-            {
-                double len = dist;
-                // A residual within the rounding of w − d·t (no component above 2^-50 of w's largest) has no direction
-                // of its own (it can lie along d itself): the point is on the line. A larger one that is still small
-                // against |w| loses its part along d, the rounding of t. Compared without squares: |w|² can overflow
-                // where the residual's cannot (a line whose origin lies far along it).
-                if (t != 0 && Range.MaxAbs(r) <= Range.MaxAbs(w) * 8.8817841970012523e-16) len = 0;
-                else if (t != 0 && r2 < w.LengthSquared * 8.673617379884035e-19) { r -= d * Vector3D.Dot(r, d); len = r.Length; }
-                n = len > 0 ? r * (1 / len) : AnyPerpendicular(d);
-            }
+            return r;
+        }
+
+        /// <summary>Point against a line or ray (<see cref="LinearResidual"/>): the distance, the line's point and t; no normal.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static PointContact PointLinear(Vector3D p, Vector3D o, Vector3D d, bool ray, out bool inRange)
+        {
+            LinearResidual(p, o, d, ray, out double t, out _, out double r2, out inRange);
+            return new PointContact(Math.Sqrt(r2), r2, o + d * t, default, t);
+        }
+
+        /// <summary>
+        /// A sphere (centre p, radius <paramref name="ra"/>) against a line or ray, sphere first: the point's contact less
+        /// the radius, the sphere's witness pushed in by ra along the push-out normal. That normal is the residual's
+        /// direction; below 2^-26 of |p − o| without its part along d (t's rounding); below 2^-28 (NearPoint) formed
+        /// from the exact inputs (<see cref="NearLinearNormal"/>); within 2^-50 (on the line as far as anything can tell:
+        /// its exact perpendicular is noise) <see cref="AnyPerpendicular"/> of d, which pushes out to within twice that.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static DistanceResult3 SphereLinear(Vector3D p, double ra, Vector3D o, Vector3D d, bool ray, out bool inRange)
+        {
+            var c = LinearContact(p, o, d, ray, out inRange);
+            double g = c.Distance - ra;
+            return new DistanceResult3(g, g > 0 ? g * g : 0, p - c.Normal * ra, c.Closest, 0, c.Parameter);
+        }
+
+        /// <summary>
+        /// <see cref="PointLinear"/> with <see cref="SphereLinear"/>'s push-out normal. Compared without squares: |w|² can
+        /// overflow where the residual's cannot (a line whose origin lies far along it). With t = 0 the residual is w
+        /// itself, rounded once. In the plane the direction is the line's normal, which Across forms exactly in
+        /// direction (a ray's origin cannot hold the pair here: the foot lies |w| along); only 3D needs the exact
+        /// normal, out of line and returned in tail position with the whole contact (as in <see cref="SegmentContact"/>).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static PointContact LinearContact(Vector3D p, Vector3D o, Vector3D d, bool ray, out bool inRange)
+        {
+            var r = LinearResidual(p, o, d, ray, out double t, out var w, out double r2, out inRange);
+            double dist = Math.Sqrt(r2), mr = Range.MaxAbs(r), mw = Range.MaxAbs(w);
+            Vector3D n;
+            if (t != 0 && mr <= mw * 8.8817841970012523e-16) n = AnyPerpendicular(d);
+            else if (t != 0 && mr < mw * NearPoint && !(p.Z == 0 && o.Z == 0 && d.Z == 0)) return LinearContactNear(p, o, d, ray, w, t, dist, r2);
+            else if (t != 0 && mr < mw * NearTouch) n = Across(r, d, 1);
+            else n = dist > 0 ? r * (1 / dist) : AnyPerpendicular(d);
             return new PointContact(dist, r2, o + d * t, n, t);
+        }
+
+        /// <summary><see cref="LinearContact"/> with <see cref="NearLinearNormal"/>, out of line (rare).</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static PointContact LinearContactNear(Vector3D p, Vector3D o, Vector3D d, bool ray, Vector3D w, double t, double dist, double r2) =>
+            new PointContact(dist, r2, o + d * t, NearLinearNormal(p, o, d, ray, w), t);
+
+        /// <summary>
+        /// The unit direction from a line or ray to a point p near it, from the exact inputs (<see cref="LinearVector"/>:
+        /// the perpendicular from exact split differences, or for a ray whose foot falls behind its origin the exact
+        /// difference to it); <see cref="AnyPerpendicular"/> of d when p lies on it exactly.
+        /// </summary>
+        private static Vector3D NearLinearNormal(Vector3D p, Vector3D o, Vector3D d, bool ray, Vector3D w)
+        {
+            var a = ray ? Linear.Ray(o, d) : Linear.Line(o, d);
+            var v = LinearVector(p, a, d, default, Num.InversePowerOfTwo(Range.MaxAbs(w)));
+            return v != default ? Unit(v, default) : AnyPerpendicular(d);
         }
 
         /// <summary>The distance of <see cref="PointLinear"/> alone (the same operations and <paramref name="inRange"/>).</summary>
@@ -84,18 +129,56 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
-        /// A point (or sphere of radius <paramref name="ra"/> centred at p) against a capsule: the point–segment contact
-        /// of p with the axis, less the radii; B's witness is pushed out of the axis by its radius along the contact
-        /// normal (<see cref="PointSegment"/>'s, deterministic when p lies on the axis), A's pushed in by ra.
+        /// A point (or sphere of radius <paramref name="ra"/> centred at p) against a capsule of radius
+        /// <paramref name="rb"/> (or, rb = 0, a segment): the point–segment contact of p with the axis, less the radii;
+        /// B's witness is pushed out of the axis by rb along the push-out normal, A's pushed in by ra. That normal is the
+        /// residual's direction; below 2^-26 of the length without its part along the segment (t's rounding); below
+        /// 2^-28 (NearPoint) formed from the exact inputs (<see cref="NearSegmentNormal"/>: which feature holds the pair
+        /// is as uncertain there, a foot within u·length of an end); within 2^-49 of an interior point, and for a point on
+        /// the segment, <see cref="AnyPerpendicular"/> of it (any perpendicular pushes out to within twice the gap).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 PointCapsule(Vector3D p, double ra, Vector3D b0, Vector3D b1, double rb, out bool inRange)
         {
-            var c = PointSegment(p, b0, b1, true, out inRange);
+            var c = SegmentContact(p, b0, b1, out inRange);
             double r = ra + rb, d = c.Distance - r;
             inRange &= r <= double.MaxValue;
-            return new DistanceResult3(d, d > 0 ? d * d : 0, p - c.Normal * ra, c.Closest + c.Normal * rb, 0, c.Parameter);
+            var pb = c.Closest;
+            if (rb != 0) pb += c.Normal * rb; // a segment's witness as it is (adding n·0 would turn a −0 into +0)
+            return new DistanceResult3(d, d > 0 ? d * d : 0, p - c.Normal * ra, pb, 0, c.Parameter);
         }
+
+        /// <summary>
+        /// <see cref="PointSegment"/> with <see cref="PointCapsule"/>'s push-out normal. The gap test first: it is almost
+        /// always false and predictable. In the plane the interior's direction is the segment's normal, which Across
+        /// forms exactly in direction: only 3D, or a foot near an end, needs the exact normal, out of line and returned
+        /// in tail position with the whole contact (a call whose result is used here made the callers keep their inputs
+        /// in memory, SysV having no callee-saved vector registers; a call returning the callers' result made them keep
+        /// that in memory: 1.7x slower on every query without PGO).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static PointContact SegmentContact(Vector3D p, Vector3D b0, Vector3D b1, out bool inRange)
+        {
+            var v = PointSegmentResidual(p, b0, b1, out double t, out double dd);
+            double v2 = v.LengthSquared, dist = Math.Sqrt(v2);
+            inRange = Range.Length2(v, v2) && (Range.In(dd) || b0 == b1);
+            bool near = v2 < dd * NearPoint2;
+            Vector3D n;
+            if (near && (v2 > dd * 3.1554436208840472e-30 || !(t > 0 && t < 1)))
+            {
+                if (!(p.Z == 0 && b0.Z == 0 && b1.Z == 0 && Clear(t, 0, 1, 1))) return SegmentContactNear(p, b0, b1, t, dist, v2);
+                n = Across(v, b1 - b0, dd);
+            }
+            else if (near || !(dist > 0)) n = AnyPerpendicular(b1 - b0);
+            else if (v2 < dd * NearTouch2 && t > 0 && t < 1) n = Across(v, b1 - b0, dd); // at an end v is p − end itself
+            else n = v * (1 / dist);
+            return new PointContact(dist, v2, SegmentPoint(b0, b1, t), n, t);
+        }
+
+        /// <summary><see cref="SegmentContact"/> with <see cref="NearSegmentNormal"/>, out of line (rare).</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static PointContact SegmentContactNear(Vector3D p, Vector3D b0, Vector3D b1, double t, double dist, double v2) =>
+            new PointContact(dist, v2, SegmentPoint(b0, b1, t), NearSegmentNormal(p, b0, b1, t), t);
 
         /// <summary>
         /// Two lines or rays (o, unit d): well apart in direction, the lines' closest parameters from cross products of
@@ -235,7 +318,7 @@ namespace ProximityLib.Double
             {
                 var b = Linear.Segment(b0, b1);
                 double g = Separation2(a, b, out var axis, out bool aFlat);
-                if (g < 0) return Crossing2(a, ra, b, rb, g, axis, aFlat);
+                if (g < 0) return Crossing2(a, ra, b, rb, g, axis, aFlat, reach);
                 // Touching axes have no residual: the separating axis orients the push (A lies on its + side).
                 n = !meet ? v * (1 / v.Length) : (axis != default ? -axis : Vector3D.UnitX);
                 if (!meet && dist < reach * NearTouch) n = NearAxesNormal(a, b0, b1, s, t, true, Num.InversePowerOfTwo(reach), n);
@@ -263,50 +346,102 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
-        /// The unit normal from axis A to segment [b0, b1] when they nearly touch (the closest pair at a, s and the
-        /// segment, t). The rounded residual turns by about u·reach/dist there, and a radius pushed out along it leaves
-        /// radius·angle²/2 of overlap (axes 1e-12 apart: 5e-8). So the normal is formed from the features that hold the
-        /// pair, from the exact inputs: two interior points, the common normal of the directions; an end against an
-        /// interior point, the end's perpendicular to the other line (<see cref="AccuratePerp"/>); two ends, their
-        /// exact difference. Turned to agree with <paramref name="residual"/> (its direction is right to far better
-        /// than a right angle), which is also the answer when the features give nothing (parallel interiors; in the
-        /// plane, two interior points apart are parallel ones). Differences are scaled by k (a power of two near 1/reach)
-        /// as they are split, so the products' error terms stay clear of underflow and 2^j-scaled inputs give the same
-        /// direction, bit for bit.
+        /// The unit normal from axis A to segment [b0, b1] when they nearly touch. The rounded
+        /// residual turns by about u·reach/dist there, and a radius pushed out along it leaves radius·angle²/2 of overlap
+        /// (axes 1e-12 apart: 5e-8); which features hold the pair is as uncertain (a foot within u·reach of an end). So
+        /// every feature pair's normal is formed from the exact inputs: each end's vector from the other axis (its
+        /// perpendicular, or the difference to the nearer end, <see cref="EdgeVector"/>), and in 3D the common normal of
+        /// the directions; and the one whose plane leaves the whole Minkowski difference of the axes farthest on its far
+        /// side (the support of its vertices, each by a compensated dot product) is taken: the exact normal's support is
+        /// the distance itself, and a direction whose support is within δ of it pushes out to within δ. A line's or
+        /// ray's unbounded side admits only directions that do not lead back along it. <paramref name="fallback"/> when
+        /// every candidate is zero or leads along a line or ray. Differences are scaled by k (a power of two near
+        /// 1/reach), so the products' error terms stay clear of underflow and 2^j-scaled inputs give the same direction,
+        /// bit for bit. Axes within 2^-49 of the reach count as meeting and are not asked here: any direction
+        /// perpendicular to both pushes them out to within twice that.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static Vector3D NearAxesNormal(in Linear a, Vector3D b0, Vector3D b1, double s, double t, bool planar, double k, Vector3D residual)
+        private static Vector3D NearAxesNormal(in Linear a, Vector3D b0, Vector3D b1, double s, double t, bool planar, double k, Vector3D fallback)
         {
-            bool sIn = s > a.Lo && s < a.Hi, tIn = t > 0 && t < 1;
-            Vector3D eh, el, r;
+            Vector3D eh, el;
             if (a.IsSegment) ExactDiff(a.End, a.Start, k, out eh, out el);
             else { eh = a.Dir * Num.InversePowerOfTwo(Range.MaxAbs(a.Dir)); el = default; }
-            if (sIn && tIn)
+            double best = double.NegativeInfinity;
+            var n = fallback;
+            if (!planar && Clear(s, a.Lo, a.Hi, a.IsSegment ? 1 : 1 / (k * Range.MaxAbs(a.Dir))) && Clear(t, 0, 1, 1))
             {
-                if (planar) return residual;
-                var dB = b1 - b0;
-                double mA = Range.MaxAbs(eh), mB = Range.MaxAbs(dB);
-                var c = AccurateCross(eh * Num.InversePowerOfTwo(mA), dB * Num.InversePowerOfTwo(mB));
-                // Nearly parallel interiors: the common normal is noise; the residual is as good as anything here.
-                r = c.LengthSquared > 1e-20 ? c : default;
+                // Interior points far from every end (the rounded parameters are off by far less) and directions not
+                // nearly parallel: the pair is the interiors', its normal the common one (the usual case, kept cheap).
+                ExactDiff(b1, b0, k, out var gh, out var gl);
+                var c = FacetAxis(eh, el, gh, gl);
+                if (c.LengthSquared > 9.313225746154785E-10 * (eh.LengthSquared * gh.LengthSquared)) // sin² above 2^-30
+                {
+                    ExactDiff(b0, a.Start, k, out var wh, out var wl);
+                    if (OffsetFrom(c, wh, wl, 0) < 0) c = -c;
+                    return Unit(c, fallback);
+                }
             }
-            else if (sIn) r = -AccuratePerp(t <= 0 ? b0 : b1, a.Start, k, eh, el);
+            if (!a.IsSegment && !a.IsRay) { } // a line has no end
             else
             {
-                var p = s <= a.Lo ? a.Start : a.End;
-                if (tIn)
-                {
-                    ExactDiff(b1, b0, k, out var fh, out var fl);
-                    r = AccuratePerp(p, b0, k, fh, fl);
-                }
-                else
-                {
-                    ExactDiff(t <= 0 ? b0 : b1, p, k, out var h, out var l);
-                    r = h + l;
-                }
+                Consider(-EdgeVector(a.Start, b0, b1, k), a, b0, b1, eh, k, ref best, ref n);
+                if (a.IsSegment) Consider(-EdgeVector(a.End, b0, b1, k), a, b0, b1, eh, k, ref best, ref n);
             }
-            var n = Unit(r, residual);
-            return Vector3D.Dot(n, residual) < 0 ? -n : n;
+            Consider(LinearVector(b0, a, eh, el, k), a, b0, b1, eh, k, ref best, ref n);
+            Consider(LinearVector(b1, a, eh, el, k), a, b0, b1, eh, k, ref best, ref n);
+            if (!planar)
+            {
+                ExactDiff(b1, b0, k, out var fh, out var fl);
+                var c = FacetAxis(eh, el, fh, fl);
+                Consider(c, a, b0, b1, eh, k, ref best, ref n);
+                Consider(-c, a, b0, b1, eh, k, ref best, ref n);
+            }
+            return n;
+        }
+
+        /// <summary>
+        /// Whether parameter x lies at least 2^-16·<paramref name="width"/> inside both ends of [lo, hi] (an infinite end
+        /// is never near; a segment's width is 1, a line's or ray's the parameter span of the configuration's reach).
+        /// </summary>
+        internal static bool Clear(double x, double lo, double hi, double width) =>
+            x - lo > 1.52587890625E-05 * width && hi - x > 1.52587890625E-05 * width;
+
+        /// <summary>(q − its nearest point on A)·k, to about a rounding of itself (<see cref="EdgeVector"/> for a segment).</summary>
+        private static Vector3D LinearVector(Vector3D q, in Linear a, Vector3D eh, Vector3D el, double k)
+        {
+            if (a.IsSegment) return EdgeVector(q, a.Start, a.End, k);
+            ExactDiff(q, a.Start, k, out var wh, out var wl);
+            if (a.IsRay && !(OffsetFrom(eh, wh, wl, 0) > 0)) return wh + wl;
+            return PerpOfDifference(wh, wl, eh, el);
+        }
+
+        /// <summary>
+        /// Takes direction v (from A toward B) if its support, the least of (B's end − A's end)·v̂ over the Minkowski
+        /// difference's vertices, beats <paramref name="best"/> (whatever its sign: the supports carry the rounding of
+        /// v̂ times the size). A ray or line extends it without bound unless v̂ does not lead along A's unbounded side
+        /// (to 2^-40).
+        /// </summary>
+        private static void Consider(Vector3D v, in Linear a, Vector3D b0, Vector3D b1, Vector3D eh, double k, ref double best, ref Vector3D n)
+        {
+            double m = Range.MaxAbs(v);
+            if (m == 0) return;
+            v *= Num.InversePowerOfTwo(m);
+            var u = v / v.Length;
+            if (!a.IsSegment)
+            {
+                double along = Vector3D.Dot(u, eh) / eh.Length;
+                if (a.IsRay ? along > 9.094947017729282E-13 : Math.Abs(along) > 9.094947017729282E-13) return;
+            }
+            double h = Math.Min(Support(u, b0, a.Start, k), Support(u, b1, a.Start, k));
+            if (a.IsSegment) h = Math.Min(h, Math.Min(Support(u, b0, a.End, k), Support(u, b1, a.End, k)));
+            if (h > best) { best = h; n = u; }
+        }
+
+        /// <summary>(q − p)·k·u to about a rounding of itself (compensated).</summary>
+        private static double Support(Vector3D u, Vector3D q, Vector3D p, double k)
+        {
+            ExactDiff(q, p, k, out var wh, out var wl);
+            return OffsetFrom(u, wh, wl, 0);
         }
 
         /// <summary>
@@ -343,29 +478,63 @@ namespace ProximityLib.Double
         /// The crossing depth case of 2D capsules: the axes' Minkowski difference holds the origin at depth −g below the
         /// face of <paramref name="axis"/> (unit, A on its + side), so A moves by (−g + ra + rb)·axis. The endpoint that
         /// bounds the extent along the axis (A's, unless the axis is A's own normal) is paired with its image across the
-        /// depth on the other axis.
+        /// depth on the other axis. Exactly, that image lies on the other axis (the origin's foot on the nearest face of a
+        /// convex set lies on the face); when rounding picked between nearly parallel faces of a sliver (axes nearly
+        /// collinear and overlapping, every depth at rounding size) it can fall far outside it, and then the pair is
+        /// <see cref="OverlapEnds"/>'s.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Crossing2(in Linear a, double ra, in Linear b, double rb, double g, Vector3D axis, bool aFlat)
+        private static DistanceResult3 Crossing2(in Linear a, double ra, in Linear b, double rb, double g, Vector3D axis, bool aFlat, double reach)
         {
-            double s, t;
+            double s, t, moved;
             Vector3D pa, pb;
             if (!aFlat)
             {
                 s = Vector3D.Dot(a.Dir, axis) > 0 ? a.Lo : a.Hi;
                 pa = a.PointAt(s);
                 pb = pa - axis * g;
-                t = Project(b, pb - b.Start);
+                t = Project(b, pb - b.Start, out moved);
             }
             else
             {
                 t = Vector3D.Dot(b.Dir, axis) > 0 ? b.Hi : b.Lo;
                 pb = b.PointAt(t);
                 pa = pb + axis * g;
-                s = Project(a, pa - a.Start);
+                s = Project(a, pa - a.Start, out moved);
             }
+            // 2^-40 of the reach: far above the rounding of the image, far below any gap a sliver's faces can hide. Not
+            // within it also when NaN: a sliver along a ray can pick the ray's infinite end.
+            if (!(moved <= reach * 9.094947017729282E-13)) OverlapEnds(a, b, out s, out t, out pa, out pb);
             double d = g - (ra + rb);
             return new DistanceResult3(d, 0, pa - axis * ra, pb + axis * rb, s, t);
+        }
+
+        /// <summary>
+        /// For axes that overlap nearly collinearly: of the finite ends of each, projected onto the other, the pair
+        /// closest together (an end inside the other's stretch, within rounding of it).
+        /// </summary>
+        private static void OverlapEnds(in Linear a, in Linear b, out double s, out double t, out Vector3D pa, out Vector3D pb)
+        {
+            double best = double.PositiveInfinity;
+            s = 0; t = 0; pa = a.Start; pb = b.Start;
+            for (int i = 0; i < 4; i++)
+            {
+                double si, ti;
+                if (i < 2)
+                {
+                    si = i == 0 ? a.Lo : a.Hi;
+                    if (double.IsInfinity(si)) continue;
+                    ti = Project(b, a.PointAt(si) - b.Start);
+                }
+                else
+                {
+                    ti = i - 2;
+                    si = Project(a, b.PointAt(ti) - a.Start);
+                }
+                Vector3D qa = a.PointAt(si), qb = b.PointAt(ti);
+                double e = (qb - qa).LengthSquared;
+                if (e < best) { best = e; s = si; t = ti; pa = qa; pb = qb; }
+            }
         }
 
         /// <summary>
@@ -373,13 +542,22 @@ namespace ProximityLib.Double
         /// power of two that brings the direction near 1 (exact, so elsewhere the same bits): a short q times a long
         /// direction would underflow at the small end of the fast range.
         /// </summary>
-        private static double Project(in Linear a, Vector3D q)
+        private static double Project(in Linear a, Vector3D q) => Project(a, q, out _);
+
+        /// <summary>
+        /// <see cref="Project(in Linear, Vector3D)"/>, also giving how far the clamp moved the point along a (in the largest
+        /// component of its direction; NaN for a NaN q).
+        /// </summary>
+        private static double Project(in Linear a, Vector3D q, out double moved)
         {
             double m = Range.MaxAbs(a.Dir);
+            moved = Range.MaxAbs(q);
             if (m == 0) return 0;
             double k = Num.InversePowerOfTwo(m);
             var dk = a.Dir * k;
-            return Num.Clamp(Vector3D.Dot(q * k, dk) / dk.LengthSquared, a.Lo, a.Hi);
+            double raw = Vector3D.Dot(q * k, dk) / dk.LengthSquared, s = Num.Clamp(raw, a.Lo, a.Hi);
+            moved = Math.Abs(raw - s) * m;
+            return s;
         }
 
         /// <summary>

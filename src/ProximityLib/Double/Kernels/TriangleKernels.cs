@@ -115,24 +115,73 @@ namespace ProximityLib.Double
         /// A along the accurate unit normal (so a sliver costs no accuracy). Otherwise, or flat: the nearest of the three
         /// edges (every closest point outside the projection lies on the boundary), the first of equal ones.
         /// <paramref name="fine"/>: the squared gap is in the fast range or exactly 0. The normal is the unit direction from
-        /// the triangle's point toward p; the plane normal (+N) for a point on a non-flat triangle.
+        /// the triangle's point toward p; the plane normal (+N) for a point on a non-flat triangle. Near touching it is
+        /// formed exactly (<see cref="NearPointTriangleNormal"/>) only <paramref name="withNormal"/>: a point's result,
+        /// and a segment's ends, never read it.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        public static PointContact PointTriangle(Vector3D p, in TriFrame f, out bool fine)
+        public static PointContact PointTriangle(Vector3D p, in TriFrame f, bool withNormal, out bool fine)
         {
             if (!f.Flat && f.Inside(p))
             {
                 double h = Vector3D.Dot((p - f.A) * f.K, f.Unit) / f.K;
                 double dist = Math.Abs(h), d2 = dist * dist;
                 fine = h == 0 || Range.In(d2);
-                return new PointContact(dist, d2, p - f.Unit * h, h < 0 ? -f.Unit : f.Unit, 0);
+                var up = h < 0 ? -f.Unit : f.Unit;
+                // Near touching: out of line, in tail position, so nothing here is kept in memory across the call.
+                if (withNormal && dist > 0 && dist * f.K < NearTouch) return NearPointTriangle(p, f, true, up, dist, d2, p - f.Unit * h);
+                return new PointContact(dist, d2, p - f.Unit * h, up, 0);
             }
             double g = NearestEdge(p, f, out int edge, out double t, out var r);
             f.Edge(edge, out var v0, out var v1);
             double len = Math.Sqrt(g);
             fine = Range.Length2(r, g);
             var normal = len > 0 ? SegmentNormal(r, g, len, v0, v1, t, (v1 - v0).LengthSquared) : (f.Flat ? AnyPerpendicular(Longest(f)) : f.Unit);
+            if (withNormal && len > 0 && len * f.K < NearTouch) return NearPointTriangle(p, f, !f.Flat, normal, len, g, SegmentPoint(v0, v1, t));
             return new PointContact(len, g, SegmentPoint(v0, v1, t), normal, 0);
+        }
+
+        /// <summary>A point-triangle contact with <see cref="NearPointTriangleNormal"/>'s normal, out of line (rare).</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static PointContact NearPointTriangle(Vector3D p, in TriFrame f, bool face, Vector3D fallback, double dist, double d2, Vector3D closest) =>
+            new PointContact(dist, d2, closest, NearPointTriangleNormal(p, f, face, fallback), 0);
+
+        /// <summary>
+        /// The unit normal from a triangle to a point p near it (within 2^-26 of the size). The rounded residual turns by
+        /// u·S/gap there, and whether the foot is over the face, on an edge or at a vertex is as uncertain, so each
+        /// feature's normal is formed from the exact inputs (the plane's normal either way when <paramref name="face"/>,
+        /// each edge's <see cref="EdgeVector"/>), and the one whose plane leaves the triangle farthest on its far side
+        /// (the least of (p − vertex)·n, each by a compensated dot product) is taken: the exact normal's is the distance
+        /// itself, and one within δ of it pushes out to within δ. The supports carry the rounding of the unit vectors
+        /// times the size (a gap of 4e-17 at size 5 can measure slightly negative), so the largest is taken whatever
+        /// its sign; <paramref name="fallback"/> only when every candidate is zero.
+        /// </summary>
+        private static Vector3D NearPointTriangleNormal(Vector3D p, in TriFrame f, bool face, Vector3D fallback)
+        {
+            double best = double.NegativeInfinity;
+            var n = fallback;
+            if (face)
+            {
+                ConsiderFrom(f.Unit, p, f, ref best, ref n);
+                ConsiderFrom(-f.Unit, p, f, ref best, ref n);
+            }
+            for (int i = 0; i < 3; i++)
+            {
+                f.Edge(i, out var v0, out var v1);
+                ConsiderFrom(EdgeVector(p, v0, v1, f.K), p, f, ref best, ref n);
+            }
+            return n;
+        }
+
+        /// <summary>Takes direction v (from the triangle toward p) if the least of (p − vertex)·v̂ beats <paramref name="best"/>.</summary>
+        private static void ConsiderFrom(Vector3D v, Vector3D p, in TriFrame f, ref double best, ref Vector3D n)
+        {
+            double m = Range.MaxAbs(v);
+            if (m == 0) return;
+            v *= Num.InversePowerOfTwo(m);
+            var u = v / v.Length;
+            double h = Math.Min(Support(u, p, f.A, f.K), Math.Min(Support(u, p, f.B, f.K), Support(u, p, f.C, f.K)));
+            if (h > best) { best = h; n = u; }
         }
 
         /// <summary>The squared distance from p to the nearest edge of the triangle (the first of equal ones), its index, parameter and residual.</summary>
@@ -150,17 +199,17 @@ namespace ProximityLib.Double
             return best;
         }
 
-        /// <summary>Point against a 3D triangle; <paramref name="inRange"/>: the configuration's squared size and the squared gap are in the fast range.</summary>
-        public static PointContact PointTriangle(Vector3D p, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
+        /// <summary>Point against a 3D triangle (<paramref name="withNormal"/>: as above); <paramref name="inRange"/>: the configuration's squared size and the squared gap are in the fast range.</summary>
+        public static PointContact PointTriangle(Vector3D p, Vector3D a, Vector3D b, Vector3D c, bool withNormal, out bool inRange)
         {
             double size2 = TriFrame.Size2(a, b, c, p, p);
-            var r = PointTriangle(p, new TriFrame(a, b, c, InverseSizeScale(size2)), out bool fine);
+            var r = PointTriangle(p, new TriFrame(a, b, c, InverseSizeScale(size2)), withNormal, out bool fine);
             inRange = fine & (Range.In(size2) | (a == b & a == c & a == p));
             return r;
         }
 
         /// <summary>
-        /// Whether p lies on a 3D triangle: the decision of <see cref="PointTriangle(Vector3D, in TriFrame, out bool)"/>
+        /// Whether p lies on a 3D triangle: the decision of <see cref="PointTriangle(Vector3D, in TriFrame, bool, out bool)"/>
         /// with its height or edge residual exactly zero (no underflowed square decides it).
         /// </summary>
         public static bool PointOnTriangle(Vector3D p, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
@@ -176,10 +225,11 @@ namespace ProximityLib.Double
         /// <summary>
         /// Point against a solid 2D triangle (z = 0). Inside or on the boundary (on the inner side of every edge, the
         /// triangle not flat): minus the distance to the nearest edge, the normal that edge's outward normal. Outside, or
-        /// flat (no interior: the segment or point it is): the nearest edge.
+        /// flat (no interior: the segment or point it is): the nearest edge, its normal near touching formed exactly
+        /// (<see cref="NearPointTriangleNormal"/>) when <paramref name="withNormal"/>.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        public static PointContact PointTriangle2(Vector3D p, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
+        public static PointContact PointTriangle2(Vector3D p, Vector3D a, Vector3D b, Vector3D c, bool withNormal, out bool inRange)
         {
             double size2 = TriFrame.Size2(a, b, c, p, p);
             double k = InverseSizeScale(size2);
@@ -194,6 +244,7 @@ namespace ProximityLib.Double
                 return new PointContact(len > 0 ? -len : 0, 0, SegmentPoint(v0, v1, t), Outward2(v1 - v0, area), 0);
             }
             var normal = len > 0 ? SegmentNormal(r, g, len, v0, v1, t, (v1 - v0).LengthSquared) : (area != 0 ? Outward2(v1 - v0, area) : AnyPerpendicular(Longest(f)));
+            if (withNormal && len > 0 && len * k < NearTouch) return NearPointTriangle(p, f, false, normal, len, g, SegmentPoint(v0, v1, t));
             return new PointContact(len, g, SegmentPoint(v0, v1, t), normal, 0);
         }
 
@@ -306,11 +357,11 @@ namespace ProximityLib.Double
         public static double SegmentTriangle(Vector3D p0, Vector3D p1, in TriFrame f, out double s, out Vector3D onSeg, out Vector3D onTri, out bool fine)
         {
             if (Crossing(p0, p1, f, out s, out onSeg)) { onTri = onSeg; fine = true; return 0; }
-            var c = PointTriangle(p0, f, out fine);
+            var c = PointTriangle(p0, f, false, out fine);
             double best = c.DistanceSquared;
             s = 0; onSeg = p0; onTri = c.Closest;
             if (best == 0) return 0;
-            c = PointTriangle(p1, f, out bool fineEnd);
+            c = PointTriangle(p1, f, false, out bool fineEnd);
             if (c.DistanceSquared < best) { best = c.DistanceSquared; s = 1; onSeg = p1; onTri = c.Closest; fine = fineEnd; }
             for (int i = 0; i < 3 && best > 0; i++)
             {
@@ -481,73 +532,64 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// The unit direction that moves segment [p0, p1] away from a triangle it nearly touches (scaled gap dist·K below
-        /// 2^-20). There the residual onSeg − onTri is mostly rounding: its direction turns by about u·S/dist, and pushing
+        /// 2^-26). There the residual onSeg − onTri is mostly rounding: its direction turns by about u·S/dist, and pushing
         /// a capsule out along a turned direction leaves radius·angle²/2 of overlap (an axis along an edge 2e-15 away:
-        /// 5e-8). So: when a facet of the Minkowski difference separates by nearly dist (the plane's normal, or the common
-        /// normal of the segment and an edge), the pair's normal is that facet's, formed from exact differences (moving
-        /// along any direction that separates by dist − δ loses at most δ). Else the pair is held by an end, or by the
-        /// segment's interior against a vertex, and the normal is formed from the <paramref name="given"/> inputs (the
-        /// frame's are rounded by the shift to A, which alone turns it by u·S/dist): an end against the triangle, its
-        /// exact vector from the nearest edge (<see cref="EdgeVector"/>; the plane's normal over the face); the interior
-        /// against a vertex, the vertex's perpendicular to the segment's line. Nearly parallel interiors, which have no
-        /// facet: the residual less its parts along both. Turned to agree with the residual, whose direction is right to
-        /// far better than a right angle.
+        /// 5e-8); which features hold the pair is as uncertain. So: when a facet of the Minkowski difference separates by
+        /// nearly dist (the plane's normal, or the common normal of the segment and an edge), that facet's normal, formed
+        /// from exact differences. Else every other feature pair's normal is formed from the <paramref name="given"/>
+        /// inputs (the frame's are rounded by the shift to A, which alone turns it by u·S/dist): each end's exact vector
+        /// from each edge (<see cref="EdgeVector"/>), each vertex's perpendicular to the segment's line, the plane's
+        /// normal either way; with the best facet and the residual, the one whose plane leaves the triangle farthest from
+        /// the segment (<see cref="TriangleSupport"/>) is taken: the exact normal's support is the gap itself, and pushing
+        /// along one within δ of it leaves the shapes within δ of touching.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static Vector3D NearTouchDirection(Vector3D p0, Vector3D p1, in TriFrame f, double dist, double s, Vector3D onSeg, Vector3D onTri, in TriangleInputs given)
         {
-            double best = f.Flat ? FlatPush(p0, p1, f, out var facet) : PrismPush(p0, p1, f, out facet);
-            if (facet != default && -best >= dist * f.K - FacetSlack) return facet;
-            var r = onSeg - onTri;
-            var d = p1 - p0;
-            double dd = d.LengthSquared, k = f.K;
-            var fallback = f.Flat ? FlatPushDirection(d, f) : f.Unit;
-            var n = default(Vector3D);
-            if (!(s > 0 && s < 1 && dd > 0))
+            double facetGap = f.Flat ? FlatPush(p0, p1, f, out var facet) : PrismPush(p0, p1, f, out facet);
+            if (facet != default && -facetGap >= dist * f.K - FacetSlack) return facet;
+            double k = f.K, best = double.NegativeInfinity;
+            var fallback = f.Flat ? FlatPushDirection(p1 - p0, f) : f.Unit;
+            var n = Unit(onSeg - onTri, fallback);
+            ConsiderAway(n, given, ref best, ref n);
+            ConsiderAway(facet, given, ref best, ref n);
+            if (!f.Flat)
             {
-                var end = s <= 0 ? given.P0 : given.P1;
-                if (!f.Flat && f.Inside(s <= 0 ? p0 : p1)) n = f.Unit;
-                else
-                {
-                    // The nearest edge by exact vectors: the rounded distances can pick the wrong one of a flat
-                    // triangle's nearly collinear edges (they differ by u·S; their normals there by u·S/dist).
-                    double least = double.PositiveInfinity;
-                    for (int i = 0; i < 3; i++)
-                    {
-                        given.Edge(i, out var w0, out var w1);
-                        var v = EdgeVector(end, w0, w1, k);
-                        double vv = v.LengthSquared;
-                        if (vv < least) { least = vv; n = v; }
-                    }
-                }
+                ConsiderAway(f.Unit, given, ref best, ref n);
+                ConsiderAway(-f.Unit, given, ref best, ref n);
             }
-            else
+            ExactDiff(given.P1, given.P0, k, out var dh, out var dl);
+            for (int i = 0; i < 3; i++)
             {
-                r -= d * (Vector3D.Dot(r, d) / dd);
-                // onTri at a vertex (to rounding): the vertex's perpendicular to the segment's line; else nearly
-                // parallel interiors (a facet would have separated otherwise): r less its part along that edge.
-                double tol = 2.0 * (dist * NearTouch + 1.4210854715202004E-14 * (Range.MaxAbs(onSeg) + Range.MaxAbs(onTri))); // 2^-46
-                for (int i = 0; i < 3; i++)
-                {
-                    f.Edge(i, out var v0, out var v1);
-                    if (Range.MaxAbs(onTri - v0) <= tol)
-                    {
-                        given.Edge(i, out var w0, out _);
-                        ExactDiff(given.P1, given.P0, k, out var dh, out var dl);
-                        n = -AccuratePerp(w0, given.P0, k, dh, dl);
-                        break;
-                    }
-                    var re = PointSegmentResidual(onSeg, v0, v1, out double t, out double ee);
-                    if (t > 0 && t < 1 && ee > 0 && Range.MaxAbs(onSeg - onTri - re) <= tol)
-                    {
-                        var e = v1 - v0;
-                        n = r - e * (Vector3D.Dot(r, e) / ee);
-                        break;
-                    }
-                }
+                given.Edge(i, out var w0, out var w1);
+                ConsiderAway(EdgeVector(given.P0, w0, w1, k), given, ref best, ref n);
+                ConsiderAway(EdgeVector(given.P1, w0, w1, k), given, ref best, ref n);
+                ConsiderAway(-AccuratePerp(w0, given.P0, k, dh, dl), given, ref best, ref n);
             }
-            var u = Unit(n, Unit(r, fallback));
-            return Vector3D.Dot(u, r) < 0 ? -u : u;
+            return n;
+        }
+
+        /// <summary>Takes direction v (from the triangle toward the segment) if its <see cref="TriangleSupport"/> beats <paramref name="best"/>.</summary>
+        private static void ConsiderAway(Vector3D v, in TriangleInputs given, ref double best, ref Vector3D n)
+        {
+            double m = Range.MaxAbs(v);
+            if (m == 0) return;
+            v *= Num.InversePowerOfTwo(m);
+            var u = v / v.Length;
+            double h = TriangleSupport(u, given);
+            if (h > best) { best = h; n = u; }
+        }
+
+        /// <summary>
+        /// The least of (segment point − triangle point)·u: over their ends and vertices, from differences to A (so a
+        /// translation adds nothing). Rounded (a few u of the size): that is all a choice between push directions needs,
+        /// as each pushes out to within its support's error.
+        /// </summary>
+        private static double TriangleSupport(Vector3D u, in TriangleInputs g)
+        {
+            double e0 = Vector3D.Dot(g.P0 - g.A, u), e1 = Vector3D.Dot(g.P1 - g.A, u);
+            double vb = Vector3D.Dot(g.B - g.A, u), vc = Vector3D.Dot(g.C - g.A, u);
+            return Math.Min(e0, e1) - Math.Max(0, Math.Max(vb, vc));
         }
 
         /// <summary>
@@ -589,10 +631,13 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
-        /// 2^-20: gaps below this fraction of the size are near touching, where a rounded residual's direction is no longer
-        /// good to 2^-32 and the near-touch normals are formed from exact inputs (here: ask which facet separates).
+        /// 2^-26: gaps below this fraction of the size are near touching, where a rounded residual's direction is no longer
+        /// good to 2^-26 (a radius r pushed along it then leaves up to r·2^-53 of overlap, a rounding of r) and the
+        /// near-touch normals are formed from exact inputs. No higher: the float API's inputs, rounded to float, put
+        /// nearly every shape built around another's point within 2^-24 of it, where the rounded residual is still fine
+        /// and the slow path would be taken for nothing.
         /// </summary>
-        private const double NearTouch = 9.5367431640625E-07;
+        private const double NearTouch = 1.4901161193847656E-08;
 
         /// <summary>NearTouch², for comparing squared gaps.</summary>
         private const double NearTouch2 = NearTouch * NearTouch;

@@ -155,7 +155,10 @@ namespace ProximityLib.Double
                     dist = gap - r;
                     // q − e has the components whose squares summed to g: its length is gap.
                     var toward = box.ToWorldOffset(q - e) * (1 / gap);
-                    if (g < NearTouch2 * q.LengthSquared) toward = NearCapsuleBoxNormal(a, b, box, t, ld, q, q - e, toward);
+                    // Near: within 2^-26 of the box-frame magnitudes, whose rounding the residual carries (an AABB's
+                    // frame starts at its min corner, so the box point alone can be 0 there).
+                    if (g < NearTouch2 * Math.Max(q.LengthSquared, Math.Max(la.LengthSquared, ld.LengthSquared)))
+                        toward = NearCapsuleBoxNormal(a, b, box, toward);
                     return new DistanceResult3(dist, dist > 0 ? dist * dist : 0, SegmentPoint(a, b, t) + toward * r, box.Origin + box.ToWorldOffset(q), t, 0);
                 }
                 // Apart by the verdict but touching to rounding: the touching branch below.
@@ -176,41 +179,91 @@ namespace ProximityLib.Double
             {
                 SegmentBoxLocal(la, ld, lo, hi, out t);
                 onAxis = onBox = SegmentPoint(a, b, t);
+                // Touching to rounding: the separating axis found may be any whose push rounds to 0, and a radius
+                // pushed along the wrong one leaves up to the radius of overlap; the near-touch normal is exact.
+                outward = -NearCapsuleBoxNormal(a, b, box, -outward);
             }
             dist = -depth - r;
             return new DistanceResult3(dist, dist > 0 ? dist * dist : 0, onAxis - outward * r, onBox, t, 0);
         }
 
         /// <summary>
-        /// The unit normal from a capsule's axis to a box it nearly touches (within 2^-20 of the box point's magnitude):
-        /// the rounded residual turns by about u·size/gap there, and the radius pushed along it leaves radius·angle²/2 of
-        /// overlap (an axis crossing an edge 1e-13 away: 2e-8). An end of the axis: the point's normal
-        /// (<see cref="NearBoxNormal"/>). An interior point against a face: the residual, along one box axis, is exact.
-        /// Against an edge (the vertex, in the plane): the common normal of the axis and the edge's box axis, turned to
-        /// agree with the residual. Against a vertex in 3D: the vertex's perpendicular to the axis's line
-        /// (<see cref="NearVertexNormal"/>).
+        /// The unit normal from a capsule's axis [a, b] to a box it nearly touches (within 2^-26 of the box-frame
+        /// magnitudes) or touches to rounding. The rounded residual turns by about u·size/gap there, and which features
+        /// hold the pair is as uncertain, so every feature pair's normal is formed from the exact inputs: an end's
+        /// (<see cref="NearBoxNormal"/>), the axis against each box edge direction (their common normal), against each
+        /// vertex (its perpendicular to the axis, <see cref="VertexPerp"/>), and the face normals; and the one whose
+        /// plane leaves the box farthest from the axis (<see cref="BoxSupport"/>) is taken: the exact normal's support
+        /// is the gap itself, and pushing along one whose support is within δ of it leaves the shapes within δ of
+        /// touching. <paramref name="toward"/> (the rounded residual's direction) competes too.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static Vector3D NearCapsuleBoxNormal(Vector3D a, Vector3D b, in Box box, double t, Vector3D ld, Vector3D q, Vector3D local, Vector3D toward)
+        private static Vector3D NearCapsuleBoxNormal(Vector3D a, Vector3D b, in Box box, Vector3D toward)
         {
-            if (!(t > 0 && t < 1)) return -NearBoxNormal(t <= 0 ? a : b, box, q, -toward); // that one points from the box
-            int free = (local.X == 0 ? 1 : 0) + (local.Y == 0 ? 1 : 0) + (local.Z == 0 ? 1 : 0);
-            if (free == 0) return NearVertexNormal(a, b, box, q, toward);
-            if (free != 1) return toward;
-            var axis = local.X == 0 ? Vector3D.UnitX : (local.Y == 0 ? Vector3D.UnitY : Vector3D.UnitZ);
-            var n = Vector3D.Cross(ld * Num.InversePowerOfTwo(Range.MaxAbs(ld)), axis);
-            if (Vector3D.Dot(n, local) < 0) n = -n;
-            return Unit(box.ToWorldOffset(n), toward);
+            var oa = box.Origin - a;
+            var ab = b - a;
+            double best = double.NegativeInfinity;
+            var n = toward;
+            Consider(toward, oa, ab, box, ref best, ref n);
+            for (int i = 0; i < 2; i++)
+            {
+                var p = i == 0 ? a : b;
+                var q = box.ToLocal(p - box.Origin);
+                var c = Clamp(q, box.Lo, box.Hi);
+                if (q != c) Consider(-NearBoxNormal(p, box, c, default), oa, ab, box, ref best, ref n);
+            }
+            int axes = box.Planar ? 2 : 3;
+            for (int i = 0; i < axes; i++)
+            {
+                var e = box.Axis(i);
+                Consider(e, oa, ab, box, ref best, ref n);
+                Consider(-e, oa, ab, box, ref best, ref n);
+                // The axis against an edge along e (in the plane: against a vertex, its normal the axis's own).
+                var cn = Vector3D.Cross(ab * Num.InversePowerOfTwo(Math.Max(Range.MaxAbs(ab), double.Epsilon)), box.Planar ? Vector3D.UnitZ : e);
+                Consider(cn, oa, ab, box, ref best, ref n);
+                Consider(-cn, oa, ab, box, ref best, ref n);
+                if (box.Planar) break;
+            }
+            if (!box.Planar)
+                for (int v = 0; v < 8; v++)
+                {
+                    var corner = new Vector3D((v & 1) == 0 ? box.Lo.X : box.Hi.X, (v & 2) == 0 ? box.Lo.Y : box.Hi.Y, (v & 4) == 0 ? box.Lo.Z : box.Hi.Z);
+                    Consider(VertexPerp(a, b, box, corner), oa, ab, box, ref best, ref n);
+                }
+            return n;
+        }
+
+        /// <summary>Takes direction v (from the axis toward the box) if its <see cref="BoxSupport"/> beats <paramref name="best"/>.</summary>
+        private static void Consider(Vector3D v, Vector3D oa, Vector3D ab, in Box box, ref double best, ref Vector3D n)
+        {
+            double m = Range.MaxAbs(v);
+            if (m == 0) return;
+            v *= Num.InversePowerOfTwo(m);
+            var u = v / v.Length;
+            double h = BoxSupport(u, oa, ab, box);
+            if (h > best) { best = h; n = u; }
         }
 
         /// <summary>
-        /// The unit normal from the axis through [a, b] to the box vertex at box-local corner c, turned to agree with
-        /// <paramref name="toward"/>: the vertex's perpendicular to the line (<see cref="PerpOfDifference"/>),
-        /// from the vertex's offset from a to about u² of itself: per component, origin − a split exactly and the three
-        /// axis products with their exact errors, summed by two-sums (the rounded vertex alone is off by u·size, which
-        /// turns the normal by u·size/gap). Scaled by k, a power of two near 1/size, as the other near-touch normals are.
+        /// The least of (box point − axis point)·u over the box and the axis [a, b] (oa = origin − a, ab = b − a): the
+        /// box's least extent along u from its axes' projections, less the axis's greatest. Rounded (to a few u of the
+        /// size): that is all a choice between push directions needs, as each pushes out to within its support's error.
         /// </summary>
-        private static Vector3D NearVertexNormal(Vector3D a, Vector3D b, in Box box, Vector3D c, Vector3D toward)
+        private static double BoxSupport(Vector3D u, Vector3D oa, Vector3D ab, in Box box)
+        {
+            double cx = Vector3D.Dot(box.X, u), cy = Vector3D.Dot(box.Y, u), cz = Vector3D.Dot(box.Z, u);
+            return Vector3D.Dot(oa, u) + Math.Min(box.Lo.X * cx, box.Hi.X * cx) + Math.Min(box.Lo.Y * cy, box.Hi.Y * cy)
+                + Math.Min(box.Lo.Z * cz, box.Hi.Z * cz) - Math.Max(0, Vector3D.Dot(ab, u));
+        }
+
+        /// <summary>
+        /// The perpendicular from the axis's line through [a, b] to the box vertex at box-local corner c (from the axis
+        /// toward the vertex), to about a rounding of itself (<see cref="PerpOfDifference"/>): the vertex's offset from
+        /// a summed to about u² of itself per component, origin − a split exactly and the three axis products with their
+        /// exact errors, by two-sums (the rounded vertex alone is off by u·size, which turns the normal by u·size/gap).
+        /// Scaled by k, a power of two near 1/size, so 2^j-scaled inputs give the same direction, bit for bit.
+        /// </summary>
+        private static Vector3D VertexPerp(Vector3D a, Vector3D b, in Box box, Vector3D c)
         {
             double k = Num.InversePowerOfTwo(Math.Max(Range.MaxAbs(b - a), Range.MaxAbs(c)));
             var ck = c * k;
@@ -218,8 +271,7 @@ namespace ProximityLib.Double
             VertexOffset(box.Origin.Y, a.Y, box.X.Y, box.Y.Y, box.Z.Y, ck, k, out double hy, out double ly);
             VertexOffset(box.Origin.Z, a.Z, box.X.Z, box.Y.Z, box.Z.Z, ck, k, out double hz, out double lz);
             ExactDiff(b, a, k, out var dh, out var dl);
-            var n = Unit(PerpOfDifference(new Vector3D(hx, hy, hz), new Vector3D(lx, ly, lz), dh, dl), toward);
-            return Vector3D.Dot(n, toward) < 0 ? -n : n;
+            return PerpOfDifference(new Vector3D(hx, hy, hz), new Vector3D(lx, ly, lz), dh, dl);
         }
 
         /// <summary>One component of (origin + x·c.X + y·c.Y + z·c.Z − a)·k as h + l (c already scaled by k).</summary>

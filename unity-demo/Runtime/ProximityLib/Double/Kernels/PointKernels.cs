@@ -68,48 +68,68 @@ namespace ProximityLib.Double
             t <= 0.5 ? a + (b - a) * t : b - (b - a) * (1 - t);
 
         /// <summary>
-        /// Point against segment. <paramref name="inRange"/>: the squared gap and the segment's squared length lie in the
-        /// fast range (see <see cref="Range"/>), or are exactly 0 because the residual vector is (the point on the
-        /// segment, as touching inputs often are) or the segment is one point: a zero that no underflow made, answered
-        /// here as the slow path would answer it. The push-out normal is formed only when
-        /// <paramref name="withNormal"/> (a constant at every call, so the other branch compiles away): a point's result
-        /// never reads it.
+        /// Point against segment: the distance, the segment's point and its parameter; no normal (<see cref="PointCapsule"/>
+        /// forms one). <paramref name="inRange"/>: the squared gap and the segment's squared length lie in the fast range
+        /// (see <see cref="Range"/>), or are exactly 0 because the residual vector is (the point on the segment, as
+        /// touching inputs often are) or the segment is one point: a zero that no underflow made, answered here as the
+        /// slow path would answer it.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)] // an out parameter on a call that is not inlined costs 4x here without PGO
-        public static PointContact PointSegment(Vector3D p, Vector3D a, Vector3D b, bool withNormal, out bool inRange)
+        public static PointContact PointSegment(Vector3D p, Vector3D a, Vector3D b, out bool inRange)
         {
             var r = PointSegmentResidual(p, a, b, out double t, out double dd);
-            double r2 = r.LengthSquared, dist = Math.Sqrt(r2);
+            double r2 = r.LengthSquared;
             inRange = Range.Length2(r, r2) && (Range.In(dd) || a == b);
-            return new PointContact(dist, r2, SegmentPoint(a, b, t), withNormal ? SegmentNormal(r, r2, dist, a, b, t, dd) : default, t);
+            return new PointContact(Math.Sqrt(r2), r2, SegmentPoint(a, b, t), default, t);
         }
 
         /// <summary>
-        /// The unit push-out direction from the segment's point toward p. For a point within 2^-30 of the segment's
-        /// length of an interior point, the part of the residual along the segment is rounding (the exact residual of an
-        /// interior projection is perpendicular to it), and it would otherwise turn the direction along the segment; it
-        /// is removed first. Within 2^-49 of the length there is nothing left but rounding: the direction is then
-        /// <see cref="AnyPerpendicular"/> of the segment, as for a point exactly on it.
+        /// 2^-28: below this fraction of a segment's length (of |p − o| for a line) a point's push-out normal is formed
+        /// from the exact inputs. Lower than <see cref="NearTouch"/>, as the point kernels' residual is bounded tighter:
+        /// formed from the nearer end, and below 2^-26 with its part along the segment (t's rounding) removed, it is off
+        /// by less than 1.3·u·length across, so at this gap a radius r pushed along it leaves at most 7·u·r of overlap (a
+        /// line's, formed from its origin: u·|p − o| across, under 40·u·r). And float inputs built on an axis sit 2^-24
+        /// of their coordinates off it, which 2^-26 put on the exact path a third of the time (3 times slower).
+        /// </summary>
+        private const double NearPoint = 3.7252902984619141E-09;
+
+        /// <summary>NearPoint², for comparing squared gaps.</summary>
+        private const double NearPoint2 = NearPoint * NearPoint;
+
+        /// <summary>
+        /// The unit direction of residual r (length <paramref name="len"/>) from segment [a, b]'s point at t toward a point:
+        /// r's own, or <see cref="AnyPerpendicular"/> of the segment for a point on it or within 2^-49 of its length of an
+        /// interior point, where r is all rounding. For callers that refine near-touch normals themselves.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static Vector3D SegmentNormal(Vector3D r, double r2, double len, Vector3D a, Vector3D b, double t, double dd)
+        internal static Vector3D SegmentNormal(Vector3D r, double r2, double len, Vector3D a, Vector3D b, double t, double dd) =>
+            len > 0 && !(r2 <= dd * 3.1554436208840472e-30 && t > 0 && t < 1) ? r * (1 / len) : AnyPerpendicular(b - a);
+
+        /// <summary>The unit direction of r less its part along d (dd = |d|²): exact in direction in the plane.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static Vector3D Across(Vector3D r, Vector3D d, double dd)
         {
-            // The gap test first: it is almost always false and predictable, where t's position is not.
-            if (r2 < dd * 8.673617379884035e-19 && t > 0 && t < 1)
+            r -= d * (Vector3D.Dot(r, d) / dd);
+            return r * (1 / r.Length);
+        }
+
+        /// <summary>
+        /// The unit direction from segment [a, b] to a point p near it, from the exact inputs (<see cref="EdgeVector"/>:
+        /// the perpendicular or the difference to the nearer end, the foot placed by compensated dot products);
+        /// <see cref="AnyPerpendicular"/> of the segment when p lies on it exactly. A foot t far inside (by 2^-16; its
+        /// rounding is far less) goes straight to the perpendicular.
+        /// </summary>
+        private static Vector3D NearSegmentNormal(Vector3D p, Vector3D a, Vector3D b, double t)
+        {
+            double k = Num.InversePowerOfTwo(Range.MaxAbs(b - a));
+            Vector3D v;
+            if (Clear(t, 0, 1, 1))
             {
-                // Within 2^-49 of the length the residual is all rounding, with no direction of its own: the point is
-                // on the segment.
-                if (r2 <= dd * 3.1554436208840472e-30) len = 0;
-                else
-                {
-                    var d = b - a;
-                    r -= d * (Vector3D.Dot(r, d) / dd);
-                    len = r.Length;
-                }
+                ExactDiff(b, a, k, out var eh, out var el);
+                v = AccuratePerp(p, a, k, eh, el);
             }
-            // Inlined with what it calls: a call here made the caller keep every input in memory across it for the
-            // slow path (SysV has no callee-saved vector registers), 1.5x slower (double segment–sphere Between).
-            return len > 0 ? r * (1 / len) : AnyPerpendicular(b - a);
+            else v = EdgeVector(p, a, b, k);
+            return v != default ? Unit(v, default) : AnyPerpendicular(b - a);
         }
 
         /// <summary>
@@ -207,7 +227,7 @@ namespace ProximityLib.Double
             var offset = box.ToWorldOffset(c);
             var diff = (p - box.Origin) - offset;
             double d2 = diff.LengthSquared;
-            // Within 2^-20 of the box point's own magnitude (q's rounding is u of it): out of line, returned directly so
+            // Within 2^-26 of the box point's own magnitude (q's rounding is u of it): out of line, returned directly so
             // nothing here is kept across the call.
             if (!near && d2 < NearTouch2 * c.LengthSquared) return PointBoxNear(p, box, q, c, out inRange);
             double d = Math.Sqrt(d2);
@@ -223,22 +243,26 @@ namespace ProximityLib.Double
             PointBoxOutside(p, box, q, c, true, out inRange);
 
         /// <summary>
-        /// The unit normal from a box to a point just outside it (within 2^-20 of the size). The rounded residual turns by
+        /// The unit normal from a box to a point just outside it (within 2^-26 of the size). The rounded residual turns by
         /// about u·size/gap there (the point's box-frame coordinates carry u·size), and a sphere pushed out along it
         /// leaves radius·angle²/2 of overlap (a sphere 1e-13 from an OBB edge: 3e-9). So each box-frame coordinate's
         /// excess over its slab is formed to about a rounding of itself (<see cref="SlabExcess"/>) and rotated back;
-        /// <paramref name="fallback"/> (the rounded residual's direction) when nothing is left.
+        /// <paramref name="fallback"/> (the rounded residual's direction) if that underflows.
         /// </summary>
         private static Vector3D NearBoxNormal(Vector3D p, in Box box, Vector3D c, Vector3D fallback)
         {
             // Scaled by k, a power of two near 1/|c| (exact), so the error terms stay clear of underflow and 2^j-scaled
-            // inputs give the same direction, bit for bit.
-            double k = Num.InversePowerOfTwo(Range.MaxAbs(c));
+            // inputs give the same direction, bit for bit; |p − origin| too, as c is 0 at an AABB's min corner.
+            double k = Num.InversePowerOfTwo(Math.Max(Range.MaxAbs(c), Range.MaxAbs(p - box.Origin)));
             ExactDiff(p, box.Origin, k, out var wh, out var wl);
             Vector3D lo = box.Lo * k, hi = box.Hi * k;
             var r = new Vector3D(SlabExcess(box.X, wh, wl, lo.X, hi.X), SlabExcess(box.Y, wh, wl, lo.Y, hi.Y),
                 SlabExcess(box.Z, wh, wl, lo.Z, hi.Z));
-            return Unit(box.ToWorldOffset(r), fallback);
+            if (r != default) return Unit(box.ToWorldOffset(r), fallback);
+            // Inside or on the box after all (q's rounding put it out): the normal of a face c lies on, as for a point
+            // inside; the rounded residual's direction is then only rounding (at a corner, anywhere between the faces).
+            NearestFace(c, box.Lo, box.Hi, box.Planar, out int face);
+            return box.ToWorldOffset(FaceNormal(face));
         }
 
         /// <summary>

@@ -267,7 +267,7 @@ namespace ProximityLib.Double
             inRange = Range.Box(m);
             double tol = PassThrough * m;
             // The origin on the target: its residual from the target, by the point–line kernel.
-            var c = PointLinear(o, p, e, targetRay, false, out _);
+            var c = PointLinear(o, p, e, targetRay, out _);
             if (c.Distance <= tol) return new RayHit3(0, c.Closest, -d, false);
             if (skew && PassesThrough(q, d, m, out double t)) return new RayHit3(t, s != 0 ? p + e * s : p, -d, false);
             if (!skew && targetRay && PassesThrough(w, d, m, out double tp)) return new RayHit3(tp, p, -d, false);
