@@ -58,6 +58,7 @@ namespace ProximityLib.Double
         /// <summary>Widens a float vector exactly.</summary>
         public static implicit operator Vector2D(System.Numerics.Vector2 v) => new Vector2D(v.X, v.Y);
         /// <summary>Rounds to the nearest float vector.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] // the float API's results: without PGO the inlining budget ran out before it (2x slower)
         public static explicit operator System.Numerics.Vector2(Vector2D v) => new System.Numerics.Vector2((float)v.X, (float)v.Y);
 
         // The 2D API runs on the 3D kernels in the z = 0 plane; z stays exactly 0 through them.
