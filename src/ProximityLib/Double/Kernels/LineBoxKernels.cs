@@ -210,17 +210,24 @@ namespace ProximityLib.Double
                 var c = Clamp(q, box.Lo, box.Hi);
                 if (q != c) Consider(-NearBoxNormal(p, box, c, default), oa, ab, box, ref best, ref n);
             }
-            int axes = box.Planar ? 2 : 3;
-            for (int i = 0; i < axes; i++)
+            // The face normals, and the axis against an edge along each box axis (their common normal); in the plane the
+            // axis against a vertex, whose normal is the axis's own.
+            var abk = ab * Num.InversePowerOfTwo(Math.Max(Range.MaxAbs(ab), double.Epsilon));
+            for (int i = 0; i < (box.Planar ? 2 : 3); i++)
             {
                 var e = box.Axis(i);
                 Consider(e, oa, ab, box, ref best, ref n);
                 Consider(-e, oa, ab, box, ref best, ref n);
-                // The axis against an edge along e (in the plane: against a vertex, its normal the axis's own).
-                var cn = Vector3D.Cross(ab * Num.InversePowerOfTwo(Math.Max(Range.MaxAbs(ab), double.Epsilon)), box.Planar ? Vector3D.UnitZ : e);
+                if (box.Planar) continue;
+                var cn = Vector3D.Cross(abk, e);
                 Consider(cn, oa, ab, box, ref best, ref n);
                 Consider(-cn, oa, ab, box, ref best, ref n);
-                if (box.Planar) break;
+            }
+            if (box.Planar)
+            {
+                var cn = Vector3D.Cross(abk, Vector3D.UnitZ);
+                Consider(cn, oa, ab, box, ref best, ref n);
+                Consider(-cn, oa, ab, box, ref best, ref n);
             }
             if (!box.Planar)
                 for (int v = 0; v < 8; v++)
@@ -234,10 +241,8 @@ namespace ProximityLib.Double
         /// <summary>Takes direction v (from the axis toward the box) if its <see cref="BoxSupport"/> beats <paramref name="best"/>.</summary>
         private static void Consider(Vector3D v, Vector3D oa, Vector3D ab, in Box box, ref double best, ref Vector3D n)
         {
-            double m = Range.MaxAbs(v);
-            if (m == 0) return;
-            v *= Num.InversePowerOfTwo(m);
-            var u = v / v.Length;
+            if (v == default) return;
+            var u = Unit(v, default);
             double h = BoxSupport(u, oa, ab, box);
             if (h > best) { best = h; n = u; }
         }

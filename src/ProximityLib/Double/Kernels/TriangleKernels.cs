@@ -176,10 +176,8 @@ namespace ProximityLib.Double
         /// <summary>Takes direction v (from the triangle toward p) if the least of (p − vertex)·v̂ beats <paramref name="best"/>.</summary>
         private static void ConsiderFrom(Vector3D v, Vector3D p, in TriFrame f, ref double best, ref Vector3D n)
         {
-            double m = Range.MaxAbs(v);
-            if (m == 0) return;
-            v *= Num.InversePowerOfTwo(m);
-            var u = v / v.Length;
+            if (v == default) return;
+            var u = Unit(v, default);
             double h = Math.Min(Support(u, p, f.A, f.K), Math.Min(Support(u, p, f.B, f.K), Support(u, p, f.C, f.K)));
             if (h > best) { best = h; n = u; }
         }
@@ -518,7 +516,7 @@ namespace ProximityLib.Double
             if (g > 0)
             {
                 double dist = Math.Sqrt(g);
-                var away = dist * f.K < NearTouch ? NearTouchDirection(p0, p1, f, dist, s, onSeg, onTri, given)
+                var away = dist * f.K < NearTouch ? NearTouchDirection(p0, p1, f, dist, onSeg, onTri, given)
                     : Unit(onSeg - onTri, f.Flat ? FlatPushDirection(p1 - p0, f) : f.Unit);
                 return Inflated(dist, onSeg + o, onTri + o, away, s, radius);
             }
@@ -544,7 +542,7 @@ namespace ProximityLib.Double
         /// along one within δ of it leaves the shapes within δ of touching.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static Vector3D NearTouchDirection(Vector3D p0, Vector3D p1, in TriFrame f, double dist, double s, Vector3D onSeg, Vector3D onTri, in TriangleInputs given)
+        private static Vector3D NearTouchDirection(Vector3D p0, Vector3D p1, in TriFrame f, double dist, Vector3D onSeg, Vector3D onTri, in TriangleInputs given)
         {
             double facetGap = f.Flat ? FlatPush(p0, p1, f, out var facet) : PrismPush(p0, p1, f, out facet);
             if (facet != default && -facetGap >= dist * f.K - FacetSlack) return facet;
@@ -572,10 +570,8 @@ namespace ProximityLib.Double
         /// <summary>Takes direction v (from the triangle toward the segment) if its <see cref="TriangleSupport"/> beats <paramref name="best"/>.</summary>
         private static void ConsiderAway(Vector3D v, in TriangleInputs given, ref double best, ref Vector3D n)
         {
-            double m = Range.MaxAbs(v);
-            if (m == 0) return;
-            v *= Num.InversePowerOfTwo(m);
-            var u = v / v.Length;
+            if (v == default) return;
+            var u = Unit(v, default);
             double h = TriangleSupport(u, given);
             if (h > best) { best = h; n = u; }
         }

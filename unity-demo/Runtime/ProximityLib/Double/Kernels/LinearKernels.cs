@@ -370,34 +370,27 @@ namespace ProximityLib.Double
             else { eh = a.Dir * Num.InversePowerOfTwo(Range.MaxAbs(a.Dir)); el = default; }
             double best = double.NegativeInfinity;
             var n = fallback;
-            if (!planar && Clear(s, a.Lo, a.Hi, a.IsSegment ? 1 : 1 / (k * Range.MaxAbs(a.Dir))) && Clear(t, 0, 1, 1))
-            {
-                // Interior points far from every end (the rounded parameters are off by far less) and directions not
-                // nearly parallel: the pair is the interiors', its normal the common one (the usual case, kept cheap).
-                ExactDiff(b1, b0, k, out var gh, out var gl);
-                var c = FacetAxis(eh, el, gh, gl);
-                if (c.LengthSquared > 9.313225746154785E-10 * (eh.LengthSquared * gh.LengthSquared)) // sin² above 2^-30
-                {
-                    ExactDiff(b0, a.Start, k, out var wh, out var wl);
-                    if (OffsetFrom(c, wh, wl, 0) < 0) c = -c;
-                    return Unit(c, fallback);
-                }
-            }
-            if (!a.IsSegment && !a.IsRay) { } // a line has no end
-            else
-            {
-                Consider(-EdgeVector(a.Start, b0, b1, k), a, b0, b1, eh, k, ref best, ref n);
-                if (a.IsSegment) Consider(-EdgeVector(a.End, b0, b1, k), a, b0, b1, eh, k, ref best, ref n);
-            }
-            Consider(LinearVector(b0, a, eh, el, k), a, b0, b1, eh, k, ref best, ref n);
-            Consider(LinearVector(b1, a, eh, el, k), a, b0, b1, eh, k, ref best, ref n);
+            var common = default(Vector3D);
             if (!planar)
             {
-                ExactDiff(b1, b0, k, out var fh, out var fl);
-                var c = FacetAxis(eh, el, fh, fl);
-                Consider(c, a, b0, b1, eh, k, ref best, ref n);
-                Consider(-c, a, b0, b1, eh, k, ref best, ref n);
+                ExactDiff(b1, b0, k, out var gh, out var gl);
+                common = FacetAxis(eh, el, gh, gl);
+                // Interior points far from every end (the rounded parameters are off by far less) and directions not
+                // nearly parallel (sin² above 2^-30): the pair is the interiors', its normal the common one (the usual
+                // case, kept cheap).
+                if (Clear(s, a.Lo, a.Hi, a.IsSegment ? 1 : 1 / (k * Range.MaxAbs(a.Dir))) && Clear(t, 0, 1, 1)
+                    && common.LengthSquared > 9.313225746154785E-10 * (eh.LengthSquared * gh.LengthSquared))
+                {
+                    ExactDiff(b0, a.Start, k, out var wh, out var wl);
+                    return Unit(OffsetFrom(common, wh, wl, 0) < 0 ? -common : common, fallback);
+                }
             }
+            if (a.IsSegment || a.IsRay) Consider(-EdgeVector(a.Start, b0, b1, k), a, b0, b1, eh, k, ref best, ref n); // a line has no end
+            if (a.IsSegment) Consider(-EdgeVector(a.End, b0, b1, k), a, b0, b1, eh, k, ref best, ref n);
+            Consider(LinearVector(b0, a, eh, el, k), a, b0, b1, eh, k, ref best, ref n);
+            Consider(LinearVector(b1, a, eh, el, k), a, b0, b1, eh, k, ref best, ref n);
+            Consider(common, a, b0, b1, eh, k, ref best, ref n);
+            Consider(-common, a, b0, b1, eh, k, ref best, ref n);
             return n;
         }
 
@@ -425,10 +418,8 @@ namespace ProximityLib.Double
         /// </summary>
         private static void Consider(Vector3D v, in Linear a, Vector3D b0, Vector3D b1, Vector3D eh, double k, ref double best, ref Vector3D n)
         {
-            double m = Range.MaxAbs(v);
-            if (m == 0) return;
-            v *= Num.InversePowerOfTwo(m);
-            var u = v / v.Length;
+            if (v == default) return;
+            var u = Unit(v, default);
             if (!a.IsSegment)
             {
                 double along = Vector3D.Dot(u, eh) / eh.Length;
