@@ -82,12 +82,11 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
-        /// 2^-28: below this fraction of a segment's length (of |p − o| for a line) a point's push-out normal is formed
-        /// from the exact inputs. Lower than <see cref="NearTouch"/>, as the point kernels' residual is bounded tighter:
-        /// formed from the nearer end, and below 2^-26 with its part along the segment (t's rounding) removed, it is off
-        /// by less than 1.3·u·length across, so at this gap a radius r pushed along it leaves at most 7·u·r of overlap (a
-        /// line's, formed from its origin: u·|p − o| across, under 40·u·r). And float inputs built on an axis sit 2^-24
-        /// of their coordinates off it, which 2^-26 put on the exact path a third of the time (3 times slower).
+        /// 2^-28: below this fraction of a segment's length a point whose foot lies near an end takes its push-out normal
+        /// from the exact inputs (which feature holds the pair is in doubt there, and the two candidates differ by a tilt
+        /// along the axis, which leaves r·θ²/2 of overlap). Lower than <see cref="NearTouch"/>, as the residual is bounded
+        /// tighter: formed from the nearer end, off by less than 1.3·u·length, so at this gap a radius r pushed along it
+        /// leaves at most 7·u·r.
         /// </summary>
         private const double NearPoint = 3.7252902984619141E-09;
 

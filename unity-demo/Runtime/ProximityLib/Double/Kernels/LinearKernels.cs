@@ -58,9 +58,9 @@ namespace ProximityLib.Double
         /// <summary>
         /// A sphere (centre p, radius <paramref name="ra"/>) against a line or ray, sphere first: the point's contact less
         /// the radius, the sphere's witness pushed in by ra along the push-out normal. That normal is the residual's
-        /// direction; below 2^-26 of |p − o| without its part along d (t's rounding); below 2^-28 (NearPoint) formed
-        /// from the exact inputs (<see cref="NearLinearNormal"/>); within 2^-50 (on the line as far as anything can tell:
-        /// its exact perpendicular is noise) <see cref="AnyPerpendicular"/> of d, which pushes out to within twice that.
+        /// direction; below 2^-26 of |p − o| without its part along d (t's rounding), which is all that matters (see
+        /// <see cref="SegmentContact"/>); within 2^-50 (on the line as far as anything can tell) <see cref="AnyPerpendicular"/>
+        /// of d, which pushes out to within twice that.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 SphereLinear(Vector3D p, double ra, Vector3D o, Vector3D d, bool ray, out bool inRange)
@@ -73,9 +73,8 @@ namespace ProximityLib.Double
         /// <summary>
         /// <see cref="PointLinear"/> with <see cref="SphereLinear"/>'s push-out normal. Compared without squares: |w|² can
         /// overflow where the residual's cannot (a line whose origin lies far along it). With t = 0 the residual is w
-        /// itself, rounded once. In the plane the direction is the line's normal, which Across forms exactly in
-        /// direction (a ray's origin cannot hold the pair here: the foot lies |w| along); only 3D needs the exact
-        /// normal, out of line and returned in tail position with the whole contact (as in <see cref="SegmentContact"/>).
+        /// itself, rounded once. Near the line the direction is Across's (a ray's origin cannot hold the pair there: the
+        /// foot lies |w| along, so no feature is in doubt).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static PointContact LinearContact(Vector3D p, Vector3D o, Vector3D d, bool ray, out bool inRange)
@@ -84,27 +83,9 @@ namespace ProximityLib.Double
             double dist = Math.Sqrt(r2), mr = Range.MaxAbs(r), mw = Range.MaxAbs(w);
             Vector3D n;
             if (t != 0 && mr <= mw * 8.8817841970012523e-16) n = AnyPerpendicular(d);
-            else if (t != 0 && mr < mw * NearPoint && !(p.Z == 0 && o.Z == 0 && d.Z == 0)) return LinearContactNear(p, o, d, ray, w, t, dist, r2);
             else if (t != 0 && mr < mw * NearTouch) n = Across(r, d, 1);
             else n = dist > 0 ? r * (1 / dist) : AnyPerpendicular(d);
             return new PointContact(dist, r2, o + d * t, n, t);
-        }
-
-        /// <summary><see cref="LinearContact"/> with <see cref="NearLinearNormal"/>, out of line (rare).</summary>
-        [MethodImpl(MethodImplOptions.NoInlining)]
-        private static PointContact LinearContactNear(Vector3D p, Vector3D o, Vector3D d, bool ray, Vector3D w, double t, double dist, double r2) =>
-            new PointContact(dist, r2, o + d * t, NearLinearNormal(p, o, d, ray, w), t);
-
-        /// <summary>
-        /// The unit direction from a line or ray to a point p near it, from the exact inputs (<see cref="LinearVector"/>:
-        /// the perpendicular from exact split differences, or for a ray whose foot falls behind its origin the exact
-        /// difference to it); <see cref="AnyPerpendicular"/> of d when p lies on it exactly.
-        /// </summary>
-        private static Vector3D NearLinearNormal(Vector3D p, Vector3D o, Vector3D d, bool ray, Vector3D w)
-        {
-            var a = ray ? Linear.Ray(o, d) : Linear.Line(o, d);
-            var v = LinearVector(p, a, d, default, Num.InversePowerOfTwo(Range.MaxAbs(w)));
-            return v != default ? Unit(v, default) : AnyPerpendicular(d);
         }
 
         /// <summary>The distance of <see cref="PointLinear"/> alone (the same operations and <paramref name="inRange"/>).</summary>
@@ -134,10 +115,10 @@ namespace ProximityLib.Double
         /// A point (or sphere of radius <paramref name="ra"/> centred at p) against a capsule of radius
         /// <paramref name="rb"/> (or, rb = 0, a segment): the point–segment contact of p with the axis, less the radii;
         /// B's witness is pushed out of the axis by rb along the push-out normal, A's pushed in by ra. That normal is the
-        /// residual's direction; below 2^-26 of the length without its part along the segment (t's rounding); below
-        /// 2^-28 (NearPoint) formed from the exact inputs (<see cref="NearSegmentNormal"/>: which feature holds the pair
-        /// is as uncertain there, a foot within u·length of an end); within 2^-49 of an interior point, and for a point on
-        /// the segment, <see cref="AnyPerpendicular"/> of it (any perpendicular pushes out to within twice the gap).
+        /// residual's direction; below 2^-26 of the length without its part along the segment (t's rounding); near an end,
+        /// below 2^-28 (NearPoint), formed from the exact inputs (<see cref="NearSegmentNormal"/>: which feature holds the
+        /// pair is uncertain there, a foot within u·length of the end); within 2^-49 of an interior point, and for a point
+        /// on the segment, <see cref="AnyPerpendicular"/> of it (any perpendicular pushes out to within twice the gap).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 PointCapsule(Vector3D p, double ra, Vector3D b0, Vector3D b1, double rb, out bool inRange)
@@ -152,11 +133,13 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// <see cref="PointSegment"/> with <see cref="PointCapsule"/>'s push-out normal. The gap test first: it is almost
-        /// always false and predictable. In the plane the interior's direction is the segment's normal, which Across
-        /// forms exactly in direction: only 3D, or a foot near an end, needs the exact normal, out of line and returned
-        /// in tail position with the whole contact (a call whose result is used here made the callers keep their inputs
-        /// in memory, SysV having no callee-saved vector registers; a call returning the callers' result made them keep
-        /// that in memory: 1.7x slower on every query without PGO).
+        /// always false and predictable. Off the interior the residual less its part along the segment (Across) is all the
+        /// normal needs, in 3D as in the plane: the push-out puts the point at the foot plus (ra + rb)·n, whose distance
+        /// from the axis is ra + rb whatever n's direction across the axis, to the foot's rounding; only a tilt along the
+        /// axis leaves overlap (r·θ²/2), and Across removes that. Near an end the feature itself is in doubt: the exact
+        /// normal, out of line and returned in tail position with the whole contact (a call whose result is used here
+        /// made the callers keep their inputs in memory, SysV having no callee-saved vector registers; a call returning
+        /// the callers' result made them keep that in memory: 1.7x slower on every query without PGO).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static PointContact SegmentContact(Vector3D p, Vector3D b0, Vector3D b1, out bool inRange)
@@ -168,7 +151,7 @@ namespace ProximityLib.Double
             Vector3D n;
             if (near && (v2 > dd * 3.1554436208840472e-30 || !(t > 0 && t < 1)))
             {
-                if (!(p.Z == 0 && b0.Z == 0 && b1.Z == 0 && Clear(t, 0, 1, 1))) return SegmentContactNear(p, b0, b1, t, dist, v2);
+                if (!Clear(t, 0, 1, 1)) return SegmentContactNear(p, b0, b1, t, dist, v2);
                 n = Across(v, b1 - b0, dd);
             }
             else if (near || !(dist > 0)) n = AnyPerpendicular(b1 - b0);
