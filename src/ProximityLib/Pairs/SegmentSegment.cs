@@ -9,7 +9,7 @@ namespace ProximityLib.Double
         internal static DistanceResult3 Core(Segment3 a, Segment3 b, out bool inRange) => Kernels.SegmentSegment(a.Start, a.End, b.Start, b.End, out inRange);
         /// <summary>Closest distance between a segment and a segment (2D): never negative; for parallel overlapping segments one of the closest pairs (the first minimum among the endpoint pairs, docs/api.md), the same in either argument order. Algorithm: interior stationary point with the Lagrange-identity determinant, else the four endpoint–segment candidates (Eberly, robust segment distance; replaces paper Eq. 13–15).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult2 Core(Segment2 a, Segment2 b, out bool inRange) => Kernels.SegmentSegment(a.Start.To3(), a.End.To3(), b.Start.To3(), b.End.To3(), out inRange).To2();
+        internal static DistanceResult2 Core(Segment2 a, Segment2 b, out bool inRange) => Kernels.SegmentSegment2(a.Start, a.End, b.Start, b.End, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static double DistanceCore(Segment3 a, Segment3 b, out bool inRange)
         {
@@ -20,7 +20,7 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static double DistanceCore(Segment2 a, Segment2 b, out bool inRange)
         {
-            double d = Kernels.SegmentSegmentDistance(a.Start.To3(), a.End.To3(), b.Start.To3(), b.End.To3());
+            double d = Kernels.SegmentSegment2Distance(a.Start, a.End, b.Start, b.End);
             inRange = !double.IsNaN(d);
             return d;
         }
@@ -31,6 +31,6 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Segment3 a, Segment3 b, out bool inRange) => Kernels.SegmentSegmentInline(a.Start, a.End, b.Start, b.End, out _, out _, out inRange) == 0;
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Segment2 a, Segment2 b, out bool inRange) => Kernels.SegmentSegmentInline(a.Start.To3(), a.End.To3(), b.Start.To3(), b.End.To3(), out _, out _, out inRange) == 0;
+        internal static bool Core(Segment2 a, Segment2 b, out bool inRange) => Kernels.SegmentSegment2Inline(a.Start, a.End, b.Start, b.End, out _, out _, out inRange) == 0;
     }
 }
