@@ -14,7 +14,7 @@ namespace ProximityLib.Double
             bool swap = Kernels.SwapCapsules(a.Start, a.End, a.Radius, b.Start, b.End, b.Radius);
             var p = swap ? b : a;
             var q = swap ? a : b;
-            var r = Kernels.LinearCapsule(Linear.Segment(p.Start, p.End), p.Radius, q.Start, q.End, q.Radius, false, true, out inRange);
+            var r = Kernels.CapsuleCapsule(p.Start, p.End, p.Radius, q.Start, q.End, q.Radius, false, out inRange);
             return swap ? r.Swapped() : r;
         }
         /// <summary>Closest distance between a capsule and a capsule (2D): negative when they overlap; separated axes give their distance less both radii; crossing axes give −(both radii + the crossing depth of the axes, the smallest push of one axis off the other along a face normal of their Minkowski difference), the witnesses an endpoint and its image across that face pushed by the radii; computed on the canonically ordered pair (src/ProximityLib/Double/Order.cs, then the radius), so the same in either argument order; ParameterA/B are the axis parameters. Algorithm: robust segment–segment distance of the axes (Eberly) less both radii; crossing depth by the separating-axis test over the axes' normals and directions (Gottschalk).</summary>
@@ -24,7 +24,7 @@ namespace ProximityLib.Double
             bool swap = Kernels.SwapCapsules(a.Start.To3(), a.End.To3(), a.Radius, b.Start.To3(), b.End.To3(), b.Radius);
             var p = swap ? b : a;
             var q = swap ? a : b;
-            var r = Kernels.LinearCapsule(Linear.Segment(p.Start.To3(), p.End.To3()), p.Radius, q.Start.To3(), q.End.To3(), q.Radius, true, true, out inRange);
+            var r = Kernels.CapsuleCapsule(p.Start.To3(), p.End.To3(), p.Radius, q.Start.To3(), q.End.To3(), q.Radius, true, out inRange);
             return (swap ? r.Swapped() : r).To2();
         }
     }
