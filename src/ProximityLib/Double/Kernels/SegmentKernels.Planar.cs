@@ -56,6 +56,14 @@ namespace ProximityLib.Double
             return r2;
         }
 
+        /// <summary>
+        /// <see cref="SegmentSegmentCore"/> for segments in the z = 0 plane given as 3D points (the planar triangle
+        /// kernels' edges): the planar kernel, the same values up to the sign of a zero parameter.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static double SegmentSegmentFlat(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, out double s, out double t, out bool inRange) =>
+            SegmentSegment2Inline(Vector2D.From3(a0), Vector2D.From3(a1), Vector2D.From3(b0), Vector2D.From3(b1), out s, out t, out inRange);
+
         /// <summary><see cref="SegmentSegment"/> in the plane.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 SegmentSegment2(Vector2D a0, Vector2D a1, Vector2D b0, Vector2D b1, out bool inRange)

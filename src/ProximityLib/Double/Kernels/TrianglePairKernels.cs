@@ -168,7 +168,7 @@ namespace ProximityLib.Double
                 for (int j = 0; j < 3; j++)
                 {
                     fb.Edge(j, out var b0, out var b1);
-                    double g = SegmentSegmentCore(a0, a1, b0, b1, out double s, out double t, out bool fineEdge);
+                    double g = SegmentSegmentFlat(a0, a1, b0, b1, out double s, out double t, out bool fineEdge);
                     if (g < best) { best = g; pa = SegmentPoint(a0, a1, s); pb = SegmentPoint(b0, b1, t); fine = fineEdge; }
                 }
             }

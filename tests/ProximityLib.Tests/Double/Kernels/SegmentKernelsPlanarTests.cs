@@ -74,6 +74,13 @@ namespace ProximityTests.Double.Kernels
                 var planar = K.SegmentSegment2(a0, a1, b0, b1, out bool planarIn);
                 Assert.That(planarIn, Is.EqualTo(liftedIn), repro);
                 Assert.That(Bits(planar), Is.EqualTo(Bits(lifted)), repro + $": planar {planar}, lifted {lifted}");
+                // The raw kernels (the planar triangle kernels take these): the same squared distance and range verdict,
+                // parameters equal up to the sign of a zero.
+                double r2Planar = K.SegmentSegmentFlat(a0.To3(), a1.To3(), b0.To3(), b1.To3(), out double sp, out double tp, out bool inPlanar);
+                double r2Lifted = K.SegmentSegmentCore(a0.To3(), a1.To3(), b0.To3(), b1.To3(), out double sl, out double tl, out bool inLifted);
+                Assert.That((BitConverter.DoubleToInt64Bits(r2Planar), inPlanar), Is.EqualTo((BitConverter.DoubleToInt64Bits(r2Lifted), inLifted)), repro);
+                Assert.That(BitConverter.DoubleToInt64Bits(sp + 0), Is.EqualTo(BitConverter.DoubleToInt64Bits(sl + 0)), repro);
+                Assert.That(BitConverter.DoubleToInt64Bits(tp + 0), Is.EqualTo(BitConverter.DoubleToInt64Bits(tl + 0)), repro);
                 Assert.That(BitConverter.DoubleToInt64Bits(K.SegmentSegment2Distance(a0, a1, b0, b1)),
                     Is.EqualTo(BitConverter.DoubleToInt64Bits(K.SegmentSegmentDistance(a0.To3(), a1.To3(), b0.To3(), b1.To3()))), repro);
             }

@@ -806,7 +806,7 @@ namespace ProximityLib.Double
             for (int i = 0; i < 3; i++)
             {
                 f.Edge(i, out var v0, out var v1);
-                double g = SegmentSegmentCore(p0, p1, v0, v1, out double se, out double te, out bool fineEdge);
+                double g = SegmentSegmentFlat(p0, p1, v0, v1, out double se, out double te, out bool fineEdge);
                 if (g < best) { best = g; s = se + 0; onSeg = SegmentPoint(p0, p1, se); onTri = SegmentPoint(v0, v1, te); fine = fineEdge; }
             }
             return best;
