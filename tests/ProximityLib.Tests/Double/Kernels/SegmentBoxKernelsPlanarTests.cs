@@ -97,7 +97,7 @@ namespace ProximityTests.Double.Kernels
         }
 
         /// <summary>Equal bits, or both zeros (of either sign).</summary>
-        private static void Same(DistanceResult2 x, DistanceResult2 y, string repro)
+        internal static void Same(DistanceResult2 x, DistanceResult2 y, string repro)
         {
             double[] p = { x.Distance, x.DistanceSquared, x.PointA.X, x.PointA.Y, x.PointB.X, x.PointB.Y, x.ParameterA, x.ParameterB };
             double[] q = { y.Distance, y.DistanceSquared, y.PointA.X, y.PointA.Y, y.PointB.X, y.PointB.Y, y.ParameterA, y.ParameterB };
