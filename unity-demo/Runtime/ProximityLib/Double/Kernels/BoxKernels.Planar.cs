@@ -170,14 +170,14 @@ namespace ProximityLib.Double
                 var p = (c & 1) != 0 ? pa1 : pa;
                 if ((c & 2) != 0) p += dy;
                 onA = originA + a.ToWorldOffset(new Vector2D((c & 1) != 0 ? hiA.X : loA.X, (c & 2) != 0 ? hiA.Y : loA.Y));
-                onB = originB + b.ToWorldOffset(new Vector2D(Num.Clamp(p.X, loB.X, hiB.X), Num.Clamp(p.Y, loB.Y, hiB.Y)));
+                onB = originB + b.ToWorldOffset(ClampLocal2(p, loB, hiB));
             }
             else
             {
                 var p = (c & 1) != 0 ? pb1 : pb;
                 if ((c & 2) != 0) p += ey;
                 onB = originB + b.ToWorldOffset(new Vector2D((c & 1) != 0 ? hiB.X : loB.X, (c & 2) != 0 ? hiB.Y : loB.Y));
-                onA = originA + a.ToWorldOffset(new Vector2D(Num.Clamp(p.X, loA.X, hiA.X), Num.Clamp(p.Y, loA.Y, hiA.Y)));
+                onA = originA + a.ToWorldOffset(ClampLocal2(p, loA, hiA));
             }
             return best;
         }
