@@ -13,14 +13,16 @@ namespace ProximityLib.Double
         public static DistanceResult3 Between(in Aabb3 a, in Aabb3 b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Closest distance between an AABB and an AABB (2D): negative when overlapping (least per-axis overlap); shared intervals put the witnesses at their middle. Algorithm: per-axis interval gaps (paper Eq. 18).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(in Aabb2 a, in Aabb2 b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Signed closest distance between an AABB and an AABB (3D) without the witness points: the Distance of <see cref="Between(in Aabb3, in Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

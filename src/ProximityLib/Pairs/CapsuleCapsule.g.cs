@@ -13,14 +13,16 @@ namespace ProximityLib.Double
         public static DistanceResult3 Between(in Capsule3 a, in Capsule3 b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Closest distance between a capsule and a capsule (2D): negative when they overlap; separated axes give their distance less both radii; crossing axes give −(both radii + the crossing depth of the axes, the smallest push of one axis off the other along a face normal of their Minkowski difference), the witnesses an endpoint and its image across that face pushed by the radii; computed on the canonically ordered pair (src/ProximityLib/Double/Order.cs, then the radius), so the same in either argument order; ParameterA/B are the axis parameters. Algorithm: robust segment–segment distance of the axes (Eberly) less both radii; crossing depth by the separating-axis test over the axes' normals and directions (Gottschalk).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(in Capsule2 a, in Capsule2 b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Signed closest distance between a capsule and a capsule (3D) without the witness points: the Distance of <see cref="Between(in Capsule3, in Capsule3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -13,7 +13,8 @@ namespace ProximityLib.Double
         public static DistanceResult3 Between(in Capsule3 a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Closest distance between a half-space and a capsule (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -23,7 +24,8 @@ namespace ProximityLib.Double
         public static DistanceResult2 Between(in Capsule2 a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Closest distance between a half-plane and a capsule (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -13,14 +13,16 @@ namespace ProximityLib.Double
         public static DistanceResult3 Between(in Line3 a, in Line3 b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Closest distance between a line and a line (2D): 0 at the crossing point unless parallel; parallel lines: the canonically first line's origin and its projection on the other (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the lines' t. Algorithm: crossing parameters from the cross product formed with exact products (Dekker), so nearly parallel lines keep their accuracy (Eberly, distance between lines).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(in Line2 a, in Line2 b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Signed closest distance between a line and a line (3D) without the witness points: the Distance of <see cref="Between(in Line3, in Line3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

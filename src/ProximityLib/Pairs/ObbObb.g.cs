@@ -13,14 +13,16 @@ namespace ProximityLib.Double
         public static DistanceResult3 Between(in Obb3 a, in Obb3 b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Closest distance between an OBB and an OBB (2D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 4 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; when apart, the closed forms on the features that can hold the closest pair (every vertex against the other box; in 3D the edges that descend from both ends).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(in Obb2 a, in Obb2 b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Signed closest distance between an OBB and an OBB (3D) without the witness points: the Distance of <see cref="Between(in Obb3, in Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -13,14 +13,16 @@ namespace ProximityLib.Double
         public static DistanceResult3 Between(in Vector3D a, in Vector3D b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Closest distance between a point and a point (2D): never negative; Distance = |b − a|. Algorithm: Euclidean distance (paper Eq. 7–8).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(in Vector2D a, in Vector2D b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Signed closest distance between a point and a point (3D) without the witness points: the Distance of <see cref="Between(in Vector3D, in Vector3D)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -24,8 +24,10 @@ namespace ProximityLib.Double
         /// <summary>
         /// Ray against a closed ball. The perpendicular distance h of the center from the line gives the half-chord
         /// √((r − h)(r + h)) without the cancellation of b² − c, and the entry is (|w|² − r²)/(−b + half-chord), the
-        /// root of the quadratic that does not cancel (Press et al., Numerical Recipes §5.6).
+        /// root of the quadratic that does not cancel (Press et al., Numerical Recipes §5.6). Inlined: without dynamic PGO
+        /// the JIT kept it a call, and reading back the struct it wrote cost half the cast (55 → 26 ns).
         /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static RayHit3 RaySphere(Vector3D o, Vector3D d, Vector3D center, double r, out bool inRange)
         {
             var w = o - center;
@@ -47,6 +49,10 @@ namespace ProximityLib.Double
             return new RayHit3(t, center + n * r, n, false);
         }
 
+        /// <summary><see cref="RaySphere"/> as a call: inlined twice, it made the capsule's cast 10–15% slower.</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static RayHit3 RaySphereCall(Vector3D o, Vector3D d, Vector3D center, double r) => RaySphere(o, d, center, r, out _);
+
         /// <summary>
         /// Ray against a closed capsule: the origin inside (point–segment distance), else the earliest of the two end
         /// balls and the side of the cylinder where the hit's axis parameter lies in [0, 1] (the capsule is their union,
@@ -60,8 +66,8 @@ namespace ProximityLib.Double
             var res = PointSegmentResidual(o, a, b, out _, out double ee);
             double rl = res.Length;
             if (rl <= r) return rl < r ? RayHit3.Inside(o) : new RayHit3(0, o, r == 0 ? -d : Unit(res, -d), false);
-            var best = RaySphere(o, d, a, r, out _);
-            var other = RaySphere(o, d, b, r, out _);
+            var best = RaySphereCall(o, d, a, r);
+            var other = RaySphereCall(o, d, b, r);
             if (other.T < best.T) best = other;
             if (ee > 0)
             {
@@ -113,6 +119,7 @@ namespace ProximityLib.Double
         }
 
         /// <summary>Ray against a closed half-space {x : n·(x − p) ≤ 0}: from the origin's signed distance and the approach rate −n·d.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static RayHit3 RayHalfSpace(Vector3D o, Vector3D d, Vector3D n, Vector3D p, out bool inRange)
         {
             var w = o - p;
@@ -126,58 +133,100 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
-        /// Ray against a closed box (slab test, Kay and Kajiya 1986) in the box's frame. An axis the ray does not move
-        /// along is a containment test, never a division by zero; the other axes divide a finite difference by a non-zero
-        /// component, so no 0·∞ or NaN. The entry axis (the first of equal ones) gives the normal; the point is snapped
-        /// onto the entry face and clamped into the box. Planar boxes (2D) skip z.
+        /// Ray against a closed box (slab test, Kay and Kajiya 1986) in the box's frame (<see cref="SlabCast"/>); the hit
+        /// point and the entry face's normal mapped back to world.
         /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static RayHit3 RayBox(Vector3D o, Vector3D d, in Box box, out bool inRange)
         {
             var w = o - box.Origin;
             inRange = Range.Box(Math.Max(Range.MaxAbs(w), Math.Max(Range.MaxAbs(box.Lo), Range.MaxAbs(box.Hi))));
-            var p = box.ToLocal(w);
-            var v = box.ToLocal(d);
-            int axes = box.Planar ? 2 : 3;
-            bool open = true, closed = true;
-            for (int i = 0; i < axes; i++)
+            int how = SlabCast(box.ToLocal(w), box.ToLocal(d), box.Lo, box.Hi, box.Planar, out double enter, out var q, out int face, out bool up);
+            if (how < 0) return RayHit3.Miss;
+            if (how == 0) return RayHit3.Inside(o);
+            var n = up ? box.Axis(face) : -box.Axis(face);
+            return how == 1 ? new RayHit3(0, o, n, false) : new RayHit3(enter, box.Origin + box.ToWorldOffset(q), n, false);
+        }
+
+        /// <summary>
+        /// <see cref="RayBox"/> for an AABB given by its corners: its frame is the world's shifted to min, where a dot
+        /// product with a unit axis, and the map back, are exact, so the answer is the one through Aabb3.ToBox and
+        /// Aabb2.ToBox (up to the sign of a zero coordinate) without forming the 150-byte box or rotating by identities
+        /// (ab against the box form, 3D: 18 → 14 ns, and 41 → 15 ns without dynamic PGO, inlined as it now is).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static RayHit3 RayAabb(Vector3D o, Vector3D d, Vector3D min, Vector3D max, bool planar, out bool inRange)
+        {
+            var p = o - min;
+            var hi = max - min;
+            inRange = Range.Box(Math.Max(Range.MaxAbs(p), Math.Max(0, Range.MaxAbs(hi))));
+            int how = SlabCast(p, d, default, hi, planar, out double enter, out var q, out int face, out bool up);
+            if (how < 0) return RayHit3.Miss;
+            if (how == 0) return RayHit3.Inside(o);
+            var axis = face == 0 ? Vector3D.UnitX : face == 1 ? Vector3D.UnitY : Vector3D.UnitZ;
+            var n = up ? axis : -axis;
+            return how == 1 ? new RayHit3(0, o, n, false) : new RayHit3(enter, min + q, n, false);
+        }
+
+        /// <summary>
+        /// The slab test in a box's frame: the ray p + T·v against [lo, hi] (planar: x and y only). −1: a miss; 0: p
+        /// inside; 1: p on the surface, a hit at T = 0 on the first axis whose coordinate sits on a face (a flat axis
+        /// faces the ray); 2: an entry at T = <paramref name="enter"/>, at the box-local point <paramref name="q"/>,
+        /// snapped onto the entry face and clamped into the box. An axis the ray does not move along is a containment
+        /// test, never a division by zero; the other axes divide a finite difference by a non-zero component, so no
+        /// 0·∞ or NaN. The entry axis (the first of equal ones) is <paramref name="face"/>; <paramref name="up"/>: its
+        /// normal is +axis. Written out per axis: a loop over the axes ran twice as slowly without dynamic PGO.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static int SlabCast(Vector3D p, Vector3D v, Vector3D lo, Vector3D hi, bool planar,
+            out double enter, out Vector3D q, out int face, out bool up)
+        {
+            enter = 0;
+            q = default;
+            bool z = !planar;
+            if ((p.X > lo.X & p.X < hi.X) & (p.Y > lo.Y & p.Y < hi.Y) & (!z | (p.Z > lo.Z & p.Z < hi.Z)))
             {
-                double x = Vec.Get(p, i), lo = Vec.Get(box.Lo, i), hi = Vec.Get(box.Hi, i);
-                open &= x > lo && x < hi;
-                closed &= x >= lo && x <= hi;
+                face = 0; up = false;
+                return 0;
             }
-            if (open) return RayHit3.Inside(o);
-            if (closed)
+            if ((p.X >= lo.X & p.X <= hi.X) & (p.Y >= lo.Y & p.Y <= hi.Y) & (!z | (p.Z >= lo.Z & p.Z <= hi.Z)))
             {
-                // On the surface: the first axis whose coordinate sits on a face; a flat axis faces the ray.
-                for (int i = 0; ; i++)
-                {
-                    double x = Vec.Get(p, i), lo = Vec.Get(box.Lo, i), hi = Vec.Get(box.Hi, i);
-                    if (x != lo && x != hi) continue;
-                    bool up = lo == hi ? Vec.Get(v, i) < 0 : x == hi;
-                    return new RayHit3(0, o, up ? box.Axis(i) : -box.Axis(i), false);
-                }
+                if (p.X == lo.X || p.X == hi.X) { face = 0; up = lo.X == hi.X ? v.X < 0 : p.X == hi.X; }
+                else if (p.Y == lo.Y || p.Y == hi.Y) { face = 1; up = lo.Y == hi.Y ? v.Y < 0 : p.Y == hi.Y; }
+                else { face = 2; up = lo.Z == hi.Z ? v.Z < 0 : p.Z == hi.Z; }
+                return 1;
             }
-            double enter = double.NegativeInfinity, exit = double.PositiveInfinity;
-            int axis = 0;
-            for (int i = 0; i < axes; i++)
-            {
-                double x = Vec.Get(p, i), vi = Vec.Get(v, i), lo = Vec.Get(box.Lo, i), hi = Vec.Get(box.Hi, i);
-                if (vi == 0)
-                {
-                    if (x < lo || x > hi) return RayHit3.Miss;
-                    continue;
-                }
-                double t1 = (lo - x) / vi, t2 = (hi - x) / vi;
-                double near = vi > 0 ? t1 : t2, far = vi > 0 ? t2 : t1;
-                if (near > enter) { enter = near; axis = i; }
-                if (far < exit) exit = far;
-            }
-            if (!(enter <= exit) || !(enter >= 0)) return RayHit3.Miss;
-            double va = Vec.Get(v, axis);
-            var q = p + v * enter;
-            q = new Vector3D(Num.Clamp(q.X, box.Lo.X, box.Hi.X), Num.Clamp(q.Y, box.Lo.Y, box.Hi.Y), Num.Clamp(q.Z, box.Lo.Z, box.Hi.Z));
-            q = Vec.With(q, axis, va > 0 ? Vec.Get(box.Lo, axis) : Vec.Get(box.Hi, axis));
-            return new RayHit3(enter, box.Origin + box.ToWorldOffset(q), va > 0 ? -box.Axis(axis) : box.Axis(axis), false);
+            double exit = double.PositiveInfinity;
+            enter = double.NegativeInfinity;
+            face = 0;
+            up = false;
+            if (!Slab(p.X, v.X, lo.X, hi.X, 0, ref enter, ref exit, ref face)
+                | !Slab(p.Y, v.Y, lo.Y, hi.Y, 1, ref enter, ref exit, ref face)
+                | (z && !Slab(p.Z, v.Z, lo.Z, hi.Z, 2, ref enter, ref exit, ref face))
+                || !(enter <= exit) || !(enter >= 0))
+                return -1;
+            double va = Vec.Get(v, face);
+            q = p + v * enter;
+            q = new Vector3D(Num.Clamp(q.X, lo.X, hi.X), Num.Clamp(q.Y, lo.Y, hi.Y), Num.Clamp(q.Z, lo.Z, hi.Z));
+            q = Vec.With(q, face, va > 0 ? Vec.Get(lo, face) : Vec.Get(hi, face));
+            up = !(va > 0);
+            return 2;
+        }
+
+        /// <summary>
+        /// One slab of <see cref="SlabCast"/>: false when the ray does not move along the axis and lies outside the
+        /// slab; else the slab's entry and exit narrow [enter, exit] (an entry beyond the current one makes this axis
+        /// the entry face).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool Slab(double x, double vi, double lo, double hi, int i, ref double enter, ref double exit, ref int face)
+        {
+            if (vi == 0) return !(x < lo || x > hi);
+            double t1 = (lo - x) / vi, t2 = (hi - x) / vi;
+            double near = vi > 0 ? t1 : t2, far = vi > 0 ? t2 : t1;
+            if (near > enter) { enter = near; face = i; }
+            if (far < exit) exit = far;
+            return true;
         }
 
         /// <summary>

@@ -15,14 +15,16 @@ namespace ProximityLib.Double
         public static DistanceResult3 Between(in HalfSpace a, in HalfSpace b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Closest distance between a half-plane and a half-plane (2D): exactly opposite normals: the signed gap a.Normal·(b.Point − a.Point) between the parallel boundaries, negative when they overlap (minus the depth), witnessed by the feet on the two boundaries of the midpoint of the stored points. Any other normals: the intersection is unbounded, Distance = −∞ (DistanceSquared 0) and both witnesses are one common point: the midpoint of the stored points when each lies in the other half-plane, else the stored point that lies in the other, else a point of both near where the boundaries meet (the midpoint, should that lie beyond the double range). Symmetric: swapping the arguments swaps the witnesses bit for bit. Algorithm: dot products from the stored points; the boundaries' meeting point in a basis built on the accurately formed cross product of the normals (well conditioned however nearly parallel they are), moved inward past its rounding.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(in HalfPlane a, in HalfPlane b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Signed closest distance between a half-space and a half-space (3D) without the witness points: the Distance of <see cref="Between(in HalfSpace, in HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

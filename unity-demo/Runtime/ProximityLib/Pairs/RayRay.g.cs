@@ -15,14 +15,16 @@ namespace ProximityLib.Double
         public static DistanceResult3 Between(in Ray3 a, in Ray3 b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Closest distance between a ray and a ray (2D): never negative (0 where they cross); where the minimum is not unique (parallel rays) the canonically first ray's origin and its nearest point on the other when that is no farther, else the other's origin and its nearest point on the first (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the rays' t ≥ 0. Algorithm: the lines' crossing parameters from the cross product formed with exact products (Dekker); when either is negative, the better of each origin against the other ray (Eberly, distance between linear components).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(in Ray2 a, in Ray2 b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Signed closest distance between a ray and a ray (3D) without the witness points: the Distance of <see cref="Between(in Ray3, in Ray3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -15,14 +15,16 @@ namespace ProximityLib.Double
         public static DistanceResult3 Between(in Sphere a, in Sphere b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Closest distance between a circle and a circle (2D): negative when overlapping (depth = ra + rb − |ca − cb|); coincident centers push the smaller sphere along +X (the larger along −X), whichever argument it is. Algorithm: |cb − ca| − (ra + rb) (paper Eq. 17); overlap compares squares (paper Eq. 24).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(in Circle a, in Circle b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Signed closest distance between a sphere and a sphere (3D) without the witness points: the Distance of <see cref="Between(in Sphere, in Sphere)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -15,14 +15,16 @@ namespace ProximityLib.Double
         public static DistanceResult3 Between(in Triangle3 a, in Triangle3 b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Closest distance between a triangle and a triangle (2D): negative when the solid triangles overlap (minimum translation over the six edge normals); apart, the closest pair over the nine edge pairs; a degenerate triangle is the segment (longest edge) or point it is; the first minimum of the canonically first triangle's edges, the same in either argument order. Algorithm: separating-axis test and depth over the edge normals (Ericson RTCD §4.4; Gottschalk et al. 1996), edge–edge distances (Eberly's robust segment distance).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(in Triangle2 a, in Triangle2 b)
         {
             var r = Core(a, b, out bool inRange);
-            return inRange ? r : Slow(a, b);
+            if (!inRange) r = Slow(a, b);
+            return r;
         }
         /// <summary>Signed closest distance between a triangle and a triangle (3D) without the witness points: the Distance of <see cref="Between(in Triangle3, in Triangle3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

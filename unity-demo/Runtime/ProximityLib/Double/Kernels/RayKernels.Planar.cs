@@ -88,8 +88,10 @@ namespace ProximityLib.Double
         /// Ray against a closed solid 2D triangle: the ray clipped by the three edges' inner sides (Cyrus–Beck), each side
         /// function cross(Q − P, x − P) formed from differences, and by the bounding box. The origin on the boundary is a hit at 0 with the first
         /// such edge's outward normal (A→B, B→C, C→A of the counter-clockwise order). A degenerate triangle is the segment
-        /// or point it is.
+        /// or point it is. Inlined, as the other casts' kernels: without dynamic PGO a call kept returning this struct
+        /// costs a stall reading it back.
         /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static RayHit2 RayTriangle2(Vector2D o, Vector2D d, Vector2D a, Vector2D b, Vector2D c, out bool inRange)
         {
             var wa = a - o;
@@ -97,12 +99,7 @@ namespace ProximityLib.Double
             var wc = c - o;
             inRange = Range.Box(Math.Max(MaxAbs(wa), Math.Max(MaxAbs(wb), MaxAbs(wc))));
             double area = Vector2D.Cross(b - a, c - a);
-            if (area == 0)
-            {
-                // Collinear: the segment between the two vertices farthest apart.
-                double ab = (b - a).LengthSquared, bc = (c - b).LengthSquared, ca = (a - c).LengthSquared;
-                return ab >= bc && ab >= ca ? RaySegment2(o, d, a, b, out _) : bc >= ca ? RaySegment2(o, d, b, c, out _) : RaySegment2(o, d, c, a, out _);
-            }
+            if (area == 0) return RayCollinear2(o, d, a, b, c);
             if (area < 0) { var swap = b; b = c; c = swap; swap = wb; wb = wc; wc = swap; }
             var eab = b - a;
             var ebc = c - b;
@@ -130,7 +127,16 @@ namespace ProximityLib.Double
             return new RayHit2(enter, o + d * enter, Outward(entry), false);
         }
 
+        /// <summary>A collinear triangle (rare, out of line): the segment between the two vertices farthest apart.</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static RayHit2 RayCollinear2(Vector2D o, Vector2D d, Vector2D a, Vector2D b, Vector2D c)
+        {
+            double ab = (b - a).LengthSquared, bc = (c - b).LengthSquared, ca = (a - c).LengthSquared;
+            return ab >= bc && ab >= ca ? RaySegment2(o, d, a, b, out _) : bc >= ca ? RaySegment2(o, d, b, c, out _) : RaySegment2(o, d, c, a, out _);
+        }
+
         /// <summary>The ray clipped to lo ≤ t·v ≤ hi (offsets from the origin); the entry's normal stays the edge's. False when it misses the slab.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static bool Slab(double lo, double hi, double v, ref double enter, ref double exit)
         {
             if (v == 0) return lo <= 0 && hi >= 0;
@@ -145,6 +151,7 @@ namespace ProximityLib.Double
         private static Vector2D Outward(Vector2D e) => Vector2D.From3(Unit(new Vector3D(e.Y, -e.X, 0), default));
 
         /// <summary>One edge's clip of the ray: f0 + t·rate ≥ 0. False when the edge rejects the whole ray.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static bool Clip(double f0, double rate, Vector2D edge, ref double enter, ref double exit, ref Vector2D entry)
         {
             if (rate == 0) return f0 >= 0;
