@@ -30,7 +30,7 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static double DistanceCore(Circle a, Obb2 b, out bool inRange)
         {
-            double d = Kernels.PointBoxDistance(a.Center.To3(), b.ToBox(), out inRange) - a.Radius;
+            double d = Kernels.PointBoxDistance2(a.Center, b.ToBox2(), out inRange) - a.Radius;
             inRange &= !b.Extreme;
             return d;
         }
@@ -48,7 +48,7 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Circle a, Obb2 b, out bool inRange)
         {
-            bool r = Kernels.WithinRadius(Kernels.PointBoxDistanceSquared(a.Center.To3(), b.ToBox()), a.Radius, out inRange);
+            bool r = Kernels.WithinRadius(Kernels.PointBoxDistanceSquared2(a.Center, b.ToBox2()), a.Radius, out inRange);
             inRange &= !b.Extreme;
             return r;
         }

@@ -32,7 +32,7 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static double DistanceCore(Vector2D a, Obb2 b, out bool inRange)
         {
-            double d = Kernels.PointBoxDistance(a.To3(), b.ToBox(), out inRange);
+            double d = Kernels.PointBoxDistance2(a, b.ToBox2(), out inRange);
             inRange &= !b.Extreme;
             return d;
         }
@@ -50,7 +50,7 @@ namespace ProximityLib.Double
         internal static bool Core(Vector2D a, Obb2 b, out bool inRange)
         {
             inRange = !b.Extreme;
-            return Kernels.PointInBox(a.To3(), b.ToBox());
+            return Kernels.PointInBox2(a, b.ToBox2());
         }
     }
 }

@@ -77,6 +77,7 @@ namespace ProximityLib.Double
         }
 
         /// <summary>The planar case of <see cref="BoxBoxOverlapsScalar"/>: the four face axes, in A's frame.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool BoxBoxOverlaps2(in Box2 a, in Box2 b)
         {
             var tw = (b.Origin - a.Origin) + b.ToWorldOffset(b.LocalCenter) - a.ToWorldOffset(a.LocalCenter);
