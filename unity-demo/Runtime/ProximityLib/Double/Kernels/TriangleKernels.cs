@@ -49,7 +49,9 @@ namespace ProximityLib.Double
             && Vector3D.Dot(Vector3D.Cross(E3, (x - B) * K), N) >= 0
             && Vector3D.Dot(Vector3D.Cross((x - C) * K, E2), N) >= 0;
 
-        /// <summary>Edge i (0: A→B, 1: B→C, 2: C→A).</summary>
+        /// <summary>Edge i (0: A→B, 1: B→C, 2: C→A). Inlined, as is Kernels.Crossing:
+        /// without dynamic PGO the JIT kept them calls, and 3D segment–triangle ran 1.4× slower.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Edge(int i, out Vector3D from, out Vector3D to)
         {
             from = i == 0 ? A : (i == 1 ? B : C);
@@ -73,6 +75,7 @@ namespace ProximityLib.Double
         }
 
         /// <summary>Edge i of the triangle (0: A→B, 1: B→C, 2: C→A), as <see cref="TriFrame.Edge"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Edge(int i, out Vector3D from, out Vector3D to)
         {
             from = i == 0 ? A : (i == 1 ? B : C);
@@ -212,6 +215,7 @@ namespace ProximityLib.Double
         /// Whether p lies on a 3D triangle: the decision of <see cref="PointTriangle(Vector3D, in TriFrame, bool, out bool)"/>
         /// with its height or edge residual exactly zero (no underflowed square decides it).
         /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool PointOnTriangle(Vector3D p, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
         {
             double size2 = TriFrame.Size2(a, b, c, p, p);
@@ -376,6 +380,7 @@ namespace ProximityLib.Double
         /// Whether segment [p0, p1] crosses the plane of a non-flat triangle inside it (its ends on either side or on it,
         /// the crossing on the inner side of every edge): the parameter <paramref name="s"/> and the point.
         /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static bool Crossing(Vector3D p0, Vector3D p1, in TriFrame f, out double s, out Vector3D x)
         {
             if (!f.Flat)
