@@ -191,8 +191,10 @@ namespace ProximityLib.Double
         /// witnessed by the feet on both boundaries of the midpoint of the stored points. Otherwise the intersection is
         /// unbounded: −∞, with a common point: the midpoint of the stored points if each lies in the other half-space, else
         /// the stored point that does, else a point of both near where the boundaries meet (<see cref="BoundaryMeet"/>;
-        /// should that lie beyond the double range, the midpoint).
+        /// should that lie beyond the double range, the midpoint). Inlined: without dynamic PGO the JIT kept it a call,
+        /// and copying the shapes into its arguments and reading back its result stalled (3D Between 22 → 7 ns).
         /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 HalfSpaceHalfSpace(Vector3D na, Vector3D pa, Vector3D nb, Vector3D pb, out bool inRange)
         {
             inRange = Range.Box(Range.MaxAbs(pb - pa));
