@@ -72,7 +72,9 @@ namespace ProximityTests.Fuzz
         /// line–circle, 2^-30 of the size: the line's old near threshold was 2^-30 of |p − o|), 3:3000000049966 (2D
         /// circle–OBB, the centre inside by 2e-14 but outside after rounding: the residual had no direction). And one
         /// whose witness was off its shape: 7:3000000037270 (2D ray–capsule along the axis, a sliver of a Minkowski
-        /// difference whose face picked by rounding had its foot 0.99 beyond the ray's origin).
+        /// difference whose face picked by rounding had its foot 0.99 beyond the ray's origin). And one that broke 2^k
+        /// scaling: 122:1000000004031 (3D capsule–AABB, a zero-length capsule centred on the box's max corner: the
+        /// normal toward the min corner was scaled by 2^1022 and overflowed at unit size, not at 2^-10 of it).
         /// </summary>
         [TestCase(11, 280751)]
         [TestCase(11, 1579269)]
@@ -105,6 +107,7 @@ namespace ProximityTests.Fuzz
         [TestCase(5, 3000000043422)]
         [TestCase(3, 3000000049966)]
         [TestCase(7, 3000000037270)]
+        [TestCase(122, 1000000004031)]
         public void CasesTheLongModeFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = Checker.Run(FuzzCase.Create(seed, index), exact: true);
