@@ -7,7 +7,8 @@ namespace ProximityTests.Double.Kernels
 {
     /// <summary>
     /// The planar point–box kernels against the 3D ones on lifted inputs (a planar Box), which the fuzz and the exact
-    /// families check: values equal bit for bit up to the sign of a zero, verdicts and inRange equal.
+    /// families check: values equal bit for bit up to the sign of a zero, verdicts and inRange equal (for the contact,
+    /// every field, the near-touch normal included, where the fast path answers).
     /// </summary>
     public class PointKernelsPlanarTests
     {
@@ -83,6 +84,15 @@ namespace ProximityTests.Double.Kernels
                 Same(planar, lifted, "distance " + repro);
                 Assert.That(planarIn, Is.EqualTo(liftedIn), "inRange " + repro);
                 Assert.That(K.PointInBox2(p, obb.ToBox2()), Is.EqualTo(K.PointInBox(p.To3(), obb.ToBox())), "inside " + repro);
+
+                var planarContact = K.PointBox2(p, obb.ToBox2(), out planarIn);
+                var liftedContact = K.PointBox(p.To3(), obb.ToBox(), out liftedIn);
+                Assert.That(planarIn, Is.EqualTo(liftedIn), "contact inRange " + repro);
+                double[] x = { planarContact.Distance, planarContact.DistanceSquared, planarContact.Parameter, planarContact.Closest.X, planarContact.Closest.Y, planarContact.Closest.Z, planarContact.Normal.X, planarContact.Normal.Y, planarContact.Normal.Z };
+                double[] y = { liftedContact.Distance, liftedContact.DistanceSquared, liftedContact.Parameter, liftedContact.Closest.X, liftedContact.Closest.Y, liftedContact.Closest.Z, liftedContact.Normal.X, liftedContact.Normal.Y, liftedContact.Normal.Z };
+                // Outside the fast range the slow path answers and the contact is not read (the lifted normal's z can be
+                // 0·∞ there); inRange must agree either way.
+                if (liftedIn) for (int j = 0; j < x.Length; j++) Same(x[j], y[j], $"contact field {j} " + repro);
             }
         }
 

@@ -18,7 +18,7 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult2 Core(Vector2D a, Obb2 b, out bool inRange)
         {
-            var r = Kernels.PointBox(a.To3(), b.ToBox(), out inRange).AsPointFirst(a.To3()).To2();
+            var r = Kernels.PointBox2(a, b.ToBox2(), out inRange).AsPointFirst(a.To3()).To2();
             inRange &= !b.Extreme;
             return r;
         }

@@ -18,7 +18,7 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult2 Core(Circle a, Obb2 b, out bool inRange)
         {
-            var r = Kernels.PointBox(a.Center.To3(), b.ToBox(), out inRange).AsSphereFirst(a.Center.To3(), a.Radius).To2();
+            var r = Kernels.PointBox2(a.Center, b.ToBox2(), out inRange).AsSphereFirst(a.Center.To3(), a.Radius).To2();
             inRange &= !b.Extreme;
             return r;
         }
