@@ -57,7 +57,9 @@ namespace ProximityLib.Double
         /// Ray against a closed capsule: the origin inside (point–segment distance), else the earliest of the two end
         /// balls and the side of the cylinder where the hit's axis parameter lies in [0, 1] (the capsule is their union,
         /// and a flat cap's points lie in a ball, so the first entry into the union is the first of these).
+        /// Inlined: without dynamic PGO, kept a call, it ran 1.4× slower than with PGO (reading back its result).
         /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static RayHit3 RayCapsule(Vector3D o, Vector3D d, Vector3D a, Vector3D b, double r, out bool inRange)
         {
             var w = o - a;

@@ -397,6 +397,7 @@ namespace ProximityLib.Double
         }
 
         /// <summary>Segment against a 3D triangle as a result; <paramref name="inRange"/>: the configuration's squared size and the squared distance are in the fast range (or an exact 0).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 SegmentTriangle(Vector3D p0, Vector3D p1, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
         {
             // In the frame of a, so a translation adds no error (see TriangleTriangle).
@@ -827,6 +828,7 @@ namespace ProximityLib.Double
         }
 
         /// <summary>Whether a segment meets a solid 2D triangle: the separating-axis test, or for a flat triangle an exactly zero segment distance.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool SegmentTriangleOverlaps2(Vector3D p0, Vector3D p1, Vector3D a, Vector3D b, Vector3D c, out bool inRange)
         {
             double size2 = TriFrame.Size2(a, b, c, p0, p1);
