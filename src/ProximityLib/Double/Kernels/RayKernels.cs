@@ -161,7 +161,7 @@ namespace ProximityLib.Double
         {
             var p = o - min;
             var hi = max - min;
-            inRange = Range.Box(Math.Max(Range.MaxAbs(p), Math.Max(0, Range.MaxAbs(hi))));
+            inRange = Range.Box(Math.Max(Range.MaxAbs(p), Range.MaxAbs(hi))); // the box form's Lo is 0 here
             int how = SlabCast(p, d, default, hi, planar, out double enter, out var q, out int face, out bool up);
             if (how < 0) return RayHit3.Miss;
             if (how == 0) return RayHit3.Inside(o);
