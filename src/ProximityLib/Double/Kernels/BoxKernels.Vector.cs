@@ -30,9 +30,9 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.NoInlining)]
         internal static int ObbObbOverlapsVector(in Obb3 a, in Obb3 b)
         {
-            Vector256<double> ha = V(a.HalfExtents), hb = V(b.HalfExtents), oa = V(a.Center), ob = V(b.Center);
-            int inRange = Range.Box(BoxSize(ob - oa, ha - (-ha), hb - (-hb))) ? 2 : 0;
-            return inRange | (OverlapsVector(oa, V(a.AxisX), V(a.AxisY), V(a.AxisZ), -ha, ha, ob, V(b.AxisX), V(b.AxisY), V(b.AxisZ), -hb, hb) ? 1 : 0);
+            Vector256<double> ha = V(a.HalfExtents), hb = V(b.HalfExtents), tw = V(b.Center) - V(a.Center);
+            int inRange = Range.Box(BoxSize(tw, ha + ha, hb + hb)) ? 2 : 0;
+            return inRange | (OverlapsCentered(tw, V(a.AxisX), V(a.AxisY), V(a.AxisZ), ha, V(b.AxisX), V(b.AxisY), V(b.AxisZ), hb) ? 1 : 0);
         }
 
         /// <summary><see cref="ObbObbOverlapsVector"/> for an AABB (origin Min, [0, Max − Min]) against an OBB.</summary>
@@ -59,23 +59,31 @@ namespace ProximityLib.Double
             Vector256<double> loA, Vector256<double> hiA, Vector256<double> ob, Vector256<double> bx0, Vector256<double> by0,
             Vector256<double> bz0, Vector256<double> loB, Vector256<double> hiB)
         {
-            var ha = (hiA - loA) * 0.5;
-            var hb = (hiB - loB) * 0.5;
             var ca = (loA + hiA) * 0.5;
             var cb = (loB + hiB) * 0.5;
             // tw = (Ob − Oa) + B.ToWorldOffset(cb) − A.ToWorldOffset(ca), the scalar form's sums in its order.
             var tw = (ob - oa) + (bx0 * Lane(cb, 0) + by0 * Lane(cb, 1) + bz0 * Lane(cb, 2)) - (ax0 * Lane(ca, 0) + ay0 * Lane(ca, 1) + az0 * Lane(ca, 2));
+            return OverlapsCentered(tw, ax0, ay0, az0, (hiA - loA) * 0.5, bx0, by0, bz0, (hiB - loB) * 0.5);
+        }
 
+        /// <summary>
+        /// The test on boxes centred on their origins, tw = B's centre − A's centre in world axes. Two OBBs need nothing
+        /// more: their <see cref="Box"/> forms have centre 0, where the general form's offsets add only zeros (up to the
+        /// sign of a zero, which no verdict sees) and (h − (−h)) · 0.5 is h exactly.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool OverlapsCentered(Vector256<double> tw, Vector256<double> ax0, Vector256<double> ay0, Vector256<double> az0,
+            Vector256<double> ha, Vector256<double> bx0, Vector256<double> by0, Vector256<double> bz0, Vector256<double> hb)
+        {
             // Columns: lane i of ax is a_i.X (A's axes are the rows ax0, ay0, az0); likewise for B.
             Transpose(ax0, ay0, az0, out var ax, out var ay, out var az);
             Transpose(bx0, by0, bz0, out var bx, out var by, out var bz);
-            // Rows of R (lane j of r_i is a_i · b_j), its columns (lane i of c_j is a_i · b_j), and T in A's frame.
+            // Rows of R (lane j of r_i is a_i · b_j) and T in A's frame. R's columns (lane i of c_j is a_i · b_j) are its
+            // transpose: the same products summed in the same order, so the same bits as forming each dot product again.
             var r0 = bx * Lane(ax0, 0) + by * Lane(ax0, 1) + bz * Lane(ax0, 2);
             var r1 = bx * Lane(ay0, 0) + by * Lane(ay0, 1) + bz * Lane(ay0, 2);
             var r2 = bx * Lane(az0, 0) + by * Lane(az0, 1) + bz * Lane(az0, 2);
-            var c0 = ax * Lane(bx0, 0) + ay * Lane(bx0, 1) + az * Lane(bx0, 2);
-            var c1 = ax * Lane(by0, 0) + ay * Lane(by0, 1) + az * Lane(by0, 2);
-            var c2 = ax * Lane(bz0, 0) + ay * Lane(bz0, 1) + az * Lane(bz0, 2);
+            Transpose(r0, r1, r2, out var c0, out var c1, out var c2);
             var t = ax * Lane(tw, 0) + ay * Lane(tw, 1) + az * Lane(tw, 2);
             Vector256<double> tx = Lane(t, 0), ty = Lane(t, 1), tz = Lane(t, 2);
             Vector256<double> hax = Lane(ha, 0), hay = Lane(ha, 1), haz = Lane(ha, 2);
