@@ -25,6 +25,13 @@ namespace ProximityLib.Double
         /// <summary>The non-negative half-extents along AxisX, AxisY, AxisZ.</summary>
         public readonly Vector3D HalfExtents;
 
+#if NET
+        /// <summary>Whether the axes are stored (every box but default(Obb3), whose axes are the world's).</summary>
+        internal bool HasStoredAxes => _hasAxes;
+        /// <summary>The stored axes, in place, for the AVX2 kernels' loads of four doubles: each is followed by the next, the third by the flags' padding.</summary>
+        internal static unsafe double* StoredAxes(Obb3* box) => &box->_x.X;
+#endif
+
         /// <summary>The first box axis (unit).</summary>
         public Vector3D AxisX => _hasAxes ? _x : Vector3D.UnitX;
         /// <summary>The second box axis (unit).</summary>

@@ -28,30 +28,70 @@ namespace ProximityLib.Double
         /// parameter, which would pin the caller's local in memory).
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        internal static int ObbObbOverlapsVector(in Obb3 a, in Obb3 b)
+        internal static unsafe int ObbObbOverlapsVector(in Obb3 a, in Obb3 b)
         {
-            Vector256<double> ha = V(a.HalfExtents), hb = V(b.HalfExtents), tw = V(b.Center) - V(a.Center);
-            int inRange = Range.Box(BoxSize(tw, ha + ha, hb + hb)) ? 2 : 0;
-            return inRange | (OverlapsCentered(tw, V(a.AxisX), V(a.AxisY), V(a.AxisZ), ha, V(b.AxisX), V(b.AxisY), V(b.AxisZ), hb) ? 1 : 0);
+            // Pinned once each (C# 9 cannot pass the readonly references to the Unsafe and span helpers, whose
+            // parameters are now ref readonly), then loaded in place.
+            fixed (Obb3* pa = &a)
+            fixed (Obb3* pb = &b)
+            {
+                Vector256<double> ha = LoadLast(&pa->HalfExtents.X), hb = LoadLast(&pb->HalfExtents.X), tw = Load(&pb->Center.X) - Load(&pa->Center.X);
+                int inRange = Range.Box(BoxSize(tw, ha + ha, hb + hb)) ? 2 : 0;
+                Axes(pa, out var ax, out var ay, out var az);
+                Axes(pb, out var bx, out var by, out var bz);
+                return inRange | (OverlapsCentered(tw, ax, ay, az, ha, bx, by, bz, hb) ? 1 : 0);
+            }
         }
 
         /// <summary><see cref="ObbObbOverlapsVector"/> for an AABB (origin Min, [0, Max − Min]) against an OBB.</summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        internal static int AabbObbOverlapsVector(in Aabb3 a, in Obb3 b)
+        internal static unsafe int AabbObbOverlapsVector(in Aabb3 a, in Obb3 b)
         {
-            Vector256<double> hiA = V(a.Max - a.Min), hb = V(b.HalfExtents), oa = V(a.Min), ob = V(b.Center);
-            int inRange = Range.Box(BoxSize(ob - oa, hiA - Vector256<double>.Zero, hb - (-hb))) ? 2 : 0;
-            return inRange | (OverlapsVector(oa, Vector256.Create(1.0, 0, 0, 0), Vector256.Create(0, 1.0, 0, 0), Vector256.Create(0, 0, 1.0, 0), Vector256<double>.Zero, hiA,
-                ob, V(b.AxisX), V(b.AxisY), V(b.AxisZ), -hb, hb) ? 1 : 0);
+            fixed (Aabb3* pa = &a)
+            fixed (Obb3* pb = &b)
+            {
+                Vector256<double> oa = Load(&pa->Min.X), hiA = LoadLast(&pa->Max.X) - oa, hb = LoadLast(&pb->HalfExtents.X), ob = Load(&pb->Center.X);
+                int inRange = Range.Box(BoxSize(ob - oa, hiA - Vector256<double>.Zero, hb - (-hb))) ? 2 : 0;
+                Axes(pb, out var bx, out var by, out var bz);
+                return inRange | (OverlapsVector(oa, Vector256.Create(1.0, 0, 0, 0), Vector256.Create(0, 1.0, 0, 0), Vector256.Create(0, 0, 1.0, 0), Vector256<double>.Zero, hiA,
+                    ob, bx, by, bz, -hb, hb) ? 1 : 0);
+            }
+        }
+
+        /// <summary>
+        /// The three doubles at p in lanes 0–2 and 0 in lane 3: one load of four doubles and a blend, where
+        /// <see cref="Vector256.Create(double, double, double, double)"/> of a Vector3D takes seven instructions. The
+        /// fourth double must belong to the same struct (a following field or padding): loaded, then dropped.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static unsafe Vector256<double> Load(double* p) => Avx.Blend(Avx.LoadVector256(p), Vector256<double>.Zero, 0b1000);
+
+        /// <summary><see cref="Load"/> for a struct's last field: the load starts one double before p (the field before it) and the lanes move down.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static unsafe Vector256<double> LoadLast(double* p) =>
+            Avx.Blend(Avx2.Permute4x64(Avx.LoadVector256(p - 1), 0b11_11_10_01), Vector256<double>.Zero, 0b1000);
+
+        /// <summary>The OBB's axes as vectors: loaded in place, or the world's for default(Obb3), which stores none.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static unsafe void Axes(Obb3* box, out Vector256<double> x, out Vector256<double> y, out Vector256<double> z)
+        {
+            if (box->HasStoredAxes)
+            {
+                double* p = Obb3.StoredAxes(box);
+                x = Load(p); y = Load(p + 3); z = Load(p + 6);
+            }
+            else { x = Vector256.Create(1.0, 0, 0, 0); y = Vector256.Create(0, 1.0, 0, 0); z = Vector256.Create(0, 0, 1.0, 0); }
         }
 
         /// <summary><see cref="Size"/> on lanes 0–2: the largest magnitude of the three.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static double BoxSize(Vector256<double> d, Vector256<double> ea, Vector256<double> eb)
         {
-            var m = Vector256.Max(Vector256.Abs(d), Vector256.Max(Vector256.Abs(ea), Vector256.Abs(eb)));
-            m = Vector256.Max(m, Avx.Permute(m, 0b0101));
-            return Math.Max(m.ToScalar(), m.GetElement(2));
+            // The hardware's max (Vector256.Max spends seven more instructions on NaN and zero-sign rules): the lanes are
+            // magnitudes, never NaN (finite shapes; an overflowed difference is +∞, which maxpd orders).
+            var m = Vector256.MaxNative(Vector256.Abs(d), Vector256.MaxNative(Vector256.Abs(ea), Vector256.Abs(eb)));
+            m = Vector256.MaxNative(m, Avx.Permute(m, 0b0101));
+            return Num.Max(m.ToScalar(), m.GetElement(2));
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

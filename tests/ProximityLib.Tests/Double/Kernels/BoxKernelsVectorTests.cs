@@ -77,6 +77,51 @@ namespace ProximityTests.Double.Kernels
             }
         }
 
+        /// <summary>
+        /// The OBB entries load each Vector3D field with the double after it (the last field with the double before it):
+        /// that double must lie in the same struct. The fields' order and the struct's size are what the loads assume.
+        /// </summary>
+        [Test]
+        public void TheInPlaceLoadsStayInsideTheShapes()
+        {
+            var o = new Obb3(new Vector3D(1, 2, 3), Vector3D.UnitX, Vector3D.UnitY, Vector3D.UnitZ, new Vector3D(4, 5, 6));
+            var c = new Aabb3(new Vector3D(1, 2, 3), new Vector3D(4, 5, 6));
+            Assert.That(System.Runtime.CompilerServices.Unsafe.ByteOffset(ref System.Runtime.CompilerServices.Unsafe.AsRef(in o.Center.X),
+                ref System.Runtime.CompilerServices.Unsafe.AsRef(in o.HalfExtents.X)), Is.EqualTo((IntPtr)24), "HalfExtents right after Center");
+            Assert.That(System.Runtime.CompilerServices.Unsafe.ByteOffset(ref System.Runtime.CompilerServices.Unsafe.AsRef(in c.Min.X),
+                ref System.Runtime.CompilerServices.Unsafe.AsRef(in c.Max.X)), Is.EqualTo((IntPtr)24), "Max right after Min");
+            unsafe
+            {
+                Assert.That(sizeof(Obb3), Is.EqualTo(128));
+                double* axes = Obb3.StoredAxes(&o);
+                Assert.That((byte*)&o.Center.X - (byte*)axes, Is.EqualTo(80), "axes first, then the flags (8 bytes with padding), then Center");
+                Assert.That(new[] { axes[0], axes[4], axes[8] }, Is.EqualTo(new[] { 1.0, 1.0, 1.0 }), "three axes of three doubles in a row");
+            }
+        }
+
+        /// <summary>default(Obb3) stores no axes (they read as the world's): the in-place loads must not be used for it.</summary>
+        [Test]
+        public void DefaultObbOverlapsAsItsBoxForm()
+        {
+            if (!System.Runtime.Intrinsics.X86.Avx2.IsSupported) Assert.Ignore("no AVX2: only the scalar form runs here");
+            var r = new Random(31);
+            var d = default(Obb3);
+            int overlapping = 0;
+            for (int i = 0; i < 500; i++)
+            {
+                var b = RandomBox(r, 0.6, 1);
+                bool box = ProximityLib.Double.Kernels.BoxBoxOverlaps(d.ToBox(), b.ToBox(), out bool boxIn);
+                Assert.That(ProximityLib.Double.Kernels.ObbObbOverlapsVector(d, b), Is.EqualTo((box ? 1 : 0) | (boxIn ? 2 : 0)), $"case {i}: default first");
+                bool swapped = ProximityLib.Double.Kernels.BoxBoxOverlaps(b.ToBox(), d.ToBox(), out bool swappedIn);
+                Assert.That(ProximityLib.Double.Kernels.ObbObbOverlapsVector(b, d), Is.EqualTo((swapped ? 1 : 0) | (swappedIn ? 2 : 0)), $"case {i}: default second");
+                var c = new Aabb3(b.Center - b.HalfExtents, b.Center + b.HalfExtents);
+                bool aabb = ProximityLib.Double.Kernels.BoxBoxOverlaps(c.ToBox(), d.ToBox(), out bool aabbIn);
+                Assert.That(ProximityLib.Double.Kernels.AabbObbOverlapsVector(c, d), Is.EqualTo((aabb ? 1 : 0) | (aabbIn ? 2 : 0)), $"case {i}: AABB–default");
+                if (box) overlapping++;
+            }
+            Assert.That(overlapping, Is.InRange(50, 450), "both verdicts occur");
+        }
+
         /// <summary>The penetration depth search on AVX2 lanes makes the scalar form's operations per axis: the same bits.</summary>
         [Test]
         public void PenetrationMatchesTheScalarFormBitForBit()

@@ -30,30 +30,70 @@ namespace ProximityLib.Double
         /// parameter, which would pin the caller's local in memory).
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        internal static int ObbObbOverlapsVector(in Obb3 a, in Obb3 b)
+        internal static unsafe int ObbObbOverlapsVector(in Obb3 a, in Obb3 b)
         {
-            Vector256<double> ha = V(a.HalfExtents), hb = V(b.HalfExtents), oa = V(a.Center), ob = V(b.Center);
-            int inRange = Range.Box(BoxSize(ob - oa, ha - (-ha), hb - (-hb))) ? 2 : 0;
-            return inRange | (OverlapsVector(oa, V(a.AxisX), V(a.AxisY), V(a.AxisZ), -ha, ha, ob, V(b.AxisX), V(b.AxisY), V(b.AxisZ), -hb, hb) ? 1 : 0);
+            // Pinned once each (C# 9 cannot pass the readonly references to the Unsafe and span helpers, whose
+            // parameters are now ref readonly), then loaded in place.
+            fixed (Obb3* pa = &a)
+            fixed (Obb3* pb = &b)
+            {
+                Vector256<double> ha = LoadLast(&pa->HalfExtents.X), hb = LoadLast(&pb->HalfExtents.X), tw = Load(&pb->Center.X) - Load(&pa->Center.X);
+                int inRange = Range.Box(BoxSize(tw, ha + ha, hb + hb)) ? 2 : 0;
+                Axes(pa, out var ax, out var ay, out var az);
+                Axes(pb, out var bx, out var by, out var bz);
+                return inRange | (OverlapsCentered(tw, ax, ay, az, ha, bx, by, bz, hb) ? 1 : 0);
+            }
         }
 
         /// <summary><see cref="ObbObbOverlapsVector"/> for an AABB (origin Min, [0, Max − Min]) against an OBB.</summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        internal static int AabbObbOverlapsVector(in Aabb3 a, in Obb3 b)
+        internal static unsafe int AabbObbOverlapsVector(in Aabb3 a, in Obb3 b)
         {
-            Vector256<double> hiA = V(a.Max - a.Min), hb = V(b.HalfExtents), oa = V(a.Min), ob = V(b.Center);
-            int inRange = Range.Box(BoxSize(ob - oa, hiA - Vector256<double>.Zero, hb - (-hb))) ? 2 : 0;
-            return inRange | (OverlapsVector(oa, Vector256.Create(1.0, 0, 0, 0), Vector256.Create(0, 1.0, 0, 0), Vector256.Create(0, 0, 1.0, 0), Vector256<double>.Zero, hiA,
-                ob, V(b.AxisX), V(b.AxisY), V(b.AxisZ), -hb, hb) ? 1 : 0);
+            fixed (Aabb3* pa = &a)
+            fixed (Obb3* pb = &b)
+            {
+                Vector256<double> oa = Load(&pa->Min.X), hiA = LoadLast(&pa->Max.X) - oa, hb = LoadLast(&pb->HalfExtents.X), ob = Load(&pb->Center.X);
+                int inRange = Range.Box(BoxSize(ob - oa, hiA - Vector256<double>.Zero, hb - (-hb))) ? 2 : 0;
+                Axes(pb, out var bx, out var by, out var bz);
+                return inRange | (OverlapsVector(oa, Vector256.Create(1.0, 0, 0, 0), Vector256.Create(0, 1.0, 0, 0), Vector256.Create(0, 0, 1.0, 0), Vector256<double>.Zero, hiA,
+                    ob, bx, by, bz, -hb, hb) ? 1 : 0);
+            }
+        }
+
+        /// <summary>
+        /// The three doubles at p in lanes 0–2 and 0 in lane 3: one load of four doubles and a blend, where
+        /// <see cref="Vector256.Create(double, double, double, double)"/> of a Vector3D takes seven instructions. The
+        /// fourth double must belong to the same struct (a following field or padding): loaded, then dropped.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static unsafe Vector256<double> Load(double* p) => Avx.Blend(Avx.LoadVector256(p), Vector256<double>.Zero, 0b1000);
+
+        /// <summary><see cref="Load"/> for a struct's last field: the load starts one double before p (the field before it) and the lanes move down.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static unsafe Vector256<double> LoadLast(double* p) =>
+            Avx.Blend(Avx2.Permute4x64(Avx.LoadVector256(p - 1), 0b11_11_10_01), Vector256<double>.Zero, 0b1000);
+
+        /// <summary>The OBB's axes as vectors: loaded in place, or the world's for default(Obb3), which stores none.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static unsafe void Axes(Obb3* box, out Vector256<double> x, out Vector256<double> y, out Vector256<double> z)
+        {
+            if (box->HasStoredAxes)
+            {
+                double* p = Obb3.StoredAxes(box);
+                x = Load(p); y = Load(p + 3); z = Load(p + 6);
+            }
+            else { x = Vector256.Create(1.0, 0, 0, 0); y = Vector256.Create(0, 1.0, 0, 0); z = Vector256.Create(0, 0, 1.0, 0); }
         }
 
         /// <summary><see cref="Size"/> on lanes 0–2: the largest magnitude of the three.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static double BoxSize(Vector256<double> d, Vector256<double> ea, Vector256<double> eb)
         {
-            var m = Vector256.Max(Vector256.Abs(d), Vector256.Max(Vector256.Abs(ea), Vector256.Abs(eb)));
-            m = Vector256.Max(m, Avx.Permute(m, 0b0101));
-            return Math.Max(m.ToScalar(), m.GetElement(2));
+            // The hardware's max (Vector256.Max spends seven more instructions on NaN and zero-sign rules): the lanes are
+            // magnitudes, never NaN (finite shapes; an overflowed difference is +∞, which maxpd orders).
+            var m = Vector256.MaxNative(Vector256.Abs(d), Vector256.MaxNative(Vector256.Abs(ea), Vector256.Abs(eb)));
+            m = Vector256.MaxNative(m, Avx.Permute(m, 0b0101));
+            return Num.Max(m.ToScalar(), m.GetElement(2));
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -61,23 +101,31 @@ namespace ProximityLib.Double
             Vector256<double> loA, Vector256<double> hiA, Vector256<double> ob, Vector256<double> bx0, Vector256<double> by0,
             Vector256<double> bz0, Vector256<double> loB, Vector256<double> hiB)
         {
-            var ha = (hiA - loA) * 0.5;
-            var hb = (hiB - loB) * 0.5;
             var ca = (loA + hiA) * 0.5;
             var cb = (loB + hiB) * 0.5;
             // tw = (Ob − Oa) + B.ToWorldOffset(cb) − A.ToWorldOffset(ca), the scalar form's sums in its order.
             var tw = (ob - oa) + (bx0 * Lane(cb, 0) + by0 * Lane(cb, 1) + bz0 * Lane(cb, 2)) - (ax0 * Lane(ca, 0) + ay0 * Lane(ca, 1) + az0 * Lane(ca, 2));
+            return OverlapsCentered(tw, ax0, ay0, az0, (hiA - loA) * 0.5, bx0, by0, bz0, (hiB - loB) * 0.5);
+        }
 
+        /// <summary>
+        /// The test on boxes centred on their origins, tw = B's centre − A's centre in world axes. Two OBBs need nothing
+        /// more: their <see cref="Box"/> forms have centre 0, where the general form's offsets add only zeros (up to the
+        /// sign of a zero, which no verdict sees) and (h − (−h)) · 0.5 is h exactly.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool OverlapsCentered(Vector256<double> tw, Vector256<double> ax0, Vector256<double> ay0, Vector256<double> az0,
+            Vector256<double> ha, Vector256<double> bx0, Vector256<double> by0, Vector256<double> bz0, Vector256<double> hb)
+        {
             // Columns: lane i of ax is a_i.X (A's axes are the rows ax0, ay0, az0); likewise for B.
             Transpose(ax0, ay0, az0, out var ax, out var ay, out var az);
             Transpose(bx0, by0, bz0, out var bx, out var by, out var bz);
-            // Rows of R (lane j of r_i is a_i · b_j), its columns (lane i of c_j is a_i · b_j), and T in A's frame.
+            // Rows of R (lane j of r_i is a_i · b_j) and T in A's frame. R's columns (lane i of c_j is a_i · b_j) are its
+            // transpose: the same products summed in the same order, so the same bits as forming each dot product again.
             var r0 = bx * Lane(ax0, 0) + by * Lane(ax0, 1) + bz * Lane(ax0, 2);
             var r1 = bx * Lane(ay0, 0) + by * Lane(ay0, 1) + bz * Lane(ay0, 2);
             var r2 = bx * Lane(az0, 0) + by * Lane(az0, 1) + bz * Lane(az0, 2);
-            var c0 = ax * Lane(bx0, 0) + ay * Lane(bx0, 1) + az * Lane(bx0, 2);
-            var c1 = ax * Lane(by0, 0) + ay * Lane(by0, 1) + az * Lane(by0, 2);
-            var c2 = ax * Lane(bz0, 0) + ay * Lane(bz0, 1) + az * Lane(bz0, 2);
+            Transpose(r0, r1, r2, out var c0, out var c1, out var c2);
             var t = ax * Lane(tw, 0) + ay * Lane(tw, 1) + az * Lane(tw, 2);
             Vector256<double> tx = Lane(t, 0), ty = Lane(t, 1), tz = Lane(t, 2);
             Vector256<double> hax = Lane(ha, 0), hay = Lane(ha, 1), haz = Lane(ha, 2);
