@@ -60,8 +60,14 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Box(double m) => (m >= BoxMin && m <= BoxMax) || m == 0;
 
+        /// <summary>
+        /// The largest magnitude of v's components, by the hardware max (<see cref="Num.Max"/>; Math.Max spends eight more
+        /// instructions on NaN and zero-sign rules). Range checks take it, and the larger of several such values by
+        /// Num.Max too, of differences of finite coordinates, extents and radii: never NaN (an overflowed difference is
+        /// ∞, which the hardware max orders, so the check still fails) and never −0 (magnitudes), where both maxes agree.
+        /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double MaxAbs(Vector3D v) => Math.Max(Math.Abs(v.X), Math.Max(Math.Abs(v.Y), Math.Abs(v.Z)));
+        public static double MaxAbs(Vector3D v) => Num.Max(Math.Abs(v.X), Num.Max(Math.Abs(v.Y), Math.Abs(v.Z)));
     }
 
     /// <summary>A shape that the slow path can measure and rescale by a power of two.</summary>

@@ -18,7 +18,7 @@ namespace ProximityLib.Double
         public static DistanceResult3 LineBox(Vector3D o, Vector3D u, bool ray, in Box box, out bool inRange)
         {
             var ro = o - box.Origin;
-            inRange = Range.Box(Math.Max(Range.MaxAbs(ro), Range.MaxAbs(box.Hi - box.Lo)));
+            inRange = Range.Box(Num.Max(Range.MaxAbs(ro), Range.MaxAbs(box.Hi - box.Lo)));
             var c = box.LocalCenter;
             var h = box.Half;
             var m = box.ToLocal(ro) - c;
@@ -103,7 +103,7 @@ namespace ProximityLib.Double
         public static bool LineBoxOverlaps(Vector3D o, Vector3D u, bool ray, in Box box, out bool inRange)
         {
             var ro = o - box.Origin;
-            inRange = Range.Box(Math.Max(Range.MaxAbs(ro), Range.MaxAbs(box.Hi - box.Lo)));
+            inRange = Range.Box(Num.Max(Range.MaxAbs(ro), Range.MaxAbs(box.Hi - box.Lo)));
             return LineBoxOverlapsLocal(box.ToLocal(ro) - box.LocalCenter, box.ToLocal(u), box.Half, box.Planar, ray);
         }
 
@@ -136,7 +136,7 @@ namespace ProximityLib.Double
         public static DistanceResult3 CapsuleBox(Vector3D a, Vector3D b, double r, in Box box, out bool inRange)
         {
             var ra = a - box.Origin;
-            inRange = Range.Box(Math.Max(Math.Max(Range.MaxAbs(ra), r), Math.Max(Range.MaxAbs(b - box.Origin), Range.MaxAbs(box.Hi - box.Lo))));
+            inRange = Range.Box(Num.Max(Num.Max(Range.MaxAbs(ra), r), Num.Max(Range.MaxAbs(b - box.Origin), Range.MaxAbs(box.Hi - box.Lo))));
             var la = box.ToLocal(ra);
             var ld = box.ToLocal(b - a);
             Vector3D lo = box.Lo, hi = box.Hi, c = box.LocalCenter, h = box.Half;
@@ -212,7 +212,7 @@ namespace ProximityLib.Double
             }
             // The face normals, and the axis against an edge along each box axis (their common normal); in the plane the
             // axis against a vertex, whose normal is the axis's own.
-            var abk = ab * Num.InversePowerOfTwo(Math.Max(Range.MaxAbs(ab), double.Epsilon));
+            var abk = ab * Num.InversePowerOfTwo(Num.Max(Range.MaxAbs(ab), double.Epsilon));
             for (int i = 0; i < (box.Planar ? 2 : 3); i++)
             {
                 var e = box.Axis(i);
@@ -270,7 +270,7 @@ namespace ProximityLib.Double
         {
             // The offset's own size counts: at an AABB's min corner c is 0, and a k from c and a zero-length axis alone
             // (2^1022) overflowed the offset, so that vertex's normal depended on the scale (fuzz seed 122).
-            double k = Num.InversePowerOfTwo(Math.Max(Math.Max(Range.MaxAbs(b - a), Range.MaxAbs(c)), Range.MaxAbs(a - box.Origin)));
+            double k = Num.InversePowerOfTwo(Num.Max(Num.Max(Range.MaxAbs(b - a), Range.MaxAbs(c)), Range.MaxAbs(a - box.Origin)));
             var ck = c * k;
             VertexOffset(box.Origin.X, a.X, box.X.X, box.Y.X, box.Z.X, ck, k, out double hx, out double lx);
             VertexOffset(box.Origin.Y, a.Y, box.X.Y, box.Y.Y, box.Z.Y, ck, k, out double hy, out double ly);
@@ -295,7 +295,7 @@ namespace ProximityLib.Double
         public static bool CapsuleBoxOverlaps(Vector3D a, Vector3D b, double r, in Box box, out bool inRange)
         {
             var ra = a - box.Origin;
-            inRange = Range.Box(Math.Max(Math.Max(Range.MaxAbs(ra), r), Math.Max(Range.MaxAbs(b - box.Origin), Range.MaxAbs(box.Hi - box.Lo))));
+            inRange = Range.Box(Num.Max(Num.Max(Range.MaxAbs(ra), r), Num.Max(Range.MaxAbs(b - box.Origin), Range.MaxAbs(box.Hi - box.Lo))));
             var la = box.ToLocal(ra);
             var ld = box.ToLocal(b - a);
             if (SegmentBoxOverlapsLocal(la - box.LocalCenter, ld, box.Half, box.Planar)) return true;

@@ -250,7 +250,7 @@ namespace ProximityLib.Double
         {
             // Scaled by k, a power of two near 1/|c| (exact), so the error terms stay clear of underflow and 2^j-scaled
             // inputs give the same direction, bit for bit; |p − origin| too, as c is 0 at an AABB's min corner.
-            double k = Num.InversePowerOfTwo(Math.Max(Range.MaxAbs(c), Range.MaxAbs(p - box.Origin)));
+            double k = Num.InversePowerOfTwo(Num.Max(Range.MaxAbs(c), Range.MaxAbs(p - box.Origin)));
             ExactDiff(p, box.Origin, k, out var wh, out var wl);
             Vector3D lo = box.Lo * k, hi = box.Hi * k;
             var r = new Vector3D(SlabExcess(box.X, wh, wl, lo.X, hi.X), SlabExcess(box.Y, wh, wl, lo.Y, hi.Y),
@@ -408,7 +408,7 @@ namespace ProximityLib.Double
         };
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double MaxAbs(Vector3D v) => Math.Max(Math.Abs(v.X), Math.Max(Math.Abs(v.Y), Math.Abs(v.Z)));
+        private static double MaxAbs(Vector3D v) => Num.Max(Math.Abs(v.X), Num.Max(Math.Abs(v.Y), Math.Abs(v.Z)));
 
         private static Vector3D Unit(Vector3D v) => v / v.Length;
 

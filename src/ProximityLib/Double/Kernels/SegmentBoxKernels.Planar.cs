@@ -14,7 +14,7 @@ namespace ProximityLib.Double
         public static DistanceResult2 SegmentBox2(Vector2D a, Vector2D b, in Box2 box, out bool inRange)
         {
             var ra = a - box.Origin;
-            inRange = Range.Box(Math.Max(MaxAbs(ra), Math.Max(MaxAbs(b - box.Origin), MaxAbs(box.Hi - box.Lo))));
+            inRange = Range.Box(Num.Max(MaxAbs(ra), Num.Max(MaxAbs(b - box.Origin), MaxAbs(box.Hi - box.Lo))));
             double dist = InFrame2(box.ToLocal(ra), box.ToLocal(b - a), box.Lo, box.Hi, ref inRange, out double d2, out double t, out var onBox, out bool touching);
             var onSegment = SegmentPoint2(a, b, t);
             return new DistanceResult2(dist, d2, onSegment, touching ? onSegment : box.Origin + box.ToWorldOffset(onBox), t, 0);
@@ -26,7 +26,7 @@ namespace ProximityLib.Double
         {
             var ra = a - min;
             var extent = max - min;
-            inRange = Range.Box(Math.Max(MaxAbs(ra), Math.Max(MaxAbs(b - min), MaxAbs(extent))));
+            inRange = Range.Box(Num.Max(MaxAbs(ra), Num.Max(MaxAbs(b - min), MaxAbs(extent))));
             double dist = InFrame2(ra, b - a, default, extent, ref inRange, out double d2, out double t, out var onBox, out bool touching);
             var onSegment = SegmentPoint2(a, b, t);
             return new DistanceResult2(dist, d2, onSegment, touching ? onSegment : min + onBox, t, 0);
@@ -37,7 +37,7 @@ namespace ProximityLib.Double
         public static bool SegmentBoxOverlaps2(Vector2D a, Vector2D b, in Box2 box, out bool inRange)
         {
             var ra = a - box.Origin;
-            inRange = Range.Box(Math.Max(MaxAbs(ra), Math.Max(MaxAbs(b - box.Origin), MaxAbs(box.Hi - box.Lo))));
+            inRange = Range.Box(Num.Max(MaxAbs(ra), Num.Max(MaxAbs(b - box.Origin), MaxAbs(box.Hi - box.Lo))));
             return SegmentBoxOverlapsLocal2(box.ToLocal(ra) - box.LocalCenter, box.ToLocal(b - a), box.Half);
         }
 
@@ -47,7 +47,7 @@ namespace ProximityLib.Double
         {
             var ra = a - min;
             var extent = max - min;
-            inRange = Range.Box(Math.Max(MaxAbs(ra), Math.Max(MaxAbs(b - min), MaxAbs(extent))));
+            inRange = Range.Box(Num.Max(MaxAbs(ra), Num.Max(MaxAbs(b - min), MaxAbs(extent))));
             var half = extent * 0.5;
             return SegmentBoxOverlapsLocal2(ra - half, b - a, half);
         }

@@ -651,7 +651,7 @@ namespace ProximityLib.Double
         private static Vector3D FlatPushDirection(Vector3D d, in TriFrame f)
         {
             var e = Longest(f);
-            var n = Vector3D.Cross(d * Num.InversePowerOfTwo(Math.Max(Range.MaxAbs(d), double.Epsilon)), e);
+            var n = Vector3D.Cross(d * Num.InversePowerOfTwo(Num.Max(Range.MaxAbs(d), double.Epsilon)), e);
             double m = Range.MaxAbs(n);
             if (m == 0) return AnyPerpendicular(Range.MaxAbs(d) > 0 ? d : e);
             n *= Num.InversePowerOfTwo(m);

@@ -23,7 +23,7 @@ namespace ProximityLib.Double
         {
             var d = c - p;
             double s = Vector3D.Dot(n, d), dist = s - r;
-            inRange = Range.Box(Math.Max(Range.MaxAbs(d), r)) & (dist <= 0 | Range.In(dist * dist));
+            inRange = Range.Box(Num.Max(Range.MaxAbs(d), r)) & (dist <= 0 | Range.In(dist * dist));
             return new DistanceResult3(dist, dist > 0 ? dist * dist : 0, c - n * r, c - n * s, t, 0);
         }
 
@@ -33,7 +33,7 @@ namespace ProximityLib.Double
         {
             var d = c - p;
             double dist = Vector3D.Dot(n, d) - r;
-            inRange = Range.Box(Math.Max(Range.MaxAbs(d), r)) & (dist <= 0 | Range.In(dist * dist));
+            inRange = Range.Box(Num.Max(Range.MaxAbs(d), r)) & (dist <= 0 | Range.In(dist * dist));
             return dist;
         }
 
@@ -50,7 +50,7 @@ namespace ProximityLib.Double
             bool end = Vector3D.Dot(n, db) < Vector3D.Dot(n, da);
             // The ends' magnitudes are checked too: an overflowed height would have made the choice meaningless.
             var r1 = BallHalfSpace(end ? b : a, r, n, p, end ? 1 : 0, out inRange);
-            inRange &= Range.Box(Math.Max(Range.MaxAbs(da), Range.MaxAbs(db)));
+            inRange &= Range.Box(Num.Max(Range.MaxAbs(da), Range.MaxAbs(db)));
             return r1;
         }
 
@@ -65,8 +65,8 @@ namespace ProximityLib.Double
             // sa or sb, bit for bit): selecting the end as a vector made a stack copy without dynamic PGO, 2x slower.
             bool upper = sb < sa;
             double dist = (upper ? sb : sa) - r;
-            inRange = Range.Box(Math.Max(upper ? Range.MaxAbs(db) : Range.MaxAbs(da), r)) & (dist <= 0 | Range.In(dist * dist))
-                & Range.Box(Math.Max(Range.MaxAbs(da), Range.MaxAbs(db)));
+            inRange = Range.Box(Num.Max(upper ? Range.MaxAbs(db) : Range.MaxAbs(da), r)) & (dist <= 0 | Range.In(dist * dist))
+                & Range.Box(Num.Max(Range.MaxAbs(da), Range.MaxAbs(db)));
             return dist;
         }
 
@@ -100,7 +100,7 @@ namespace ProximityLib.Double
             var db = b - p;
             var dc = c - p;
             double sa = Vector3D.Dot(n, da), sb = Vector3D.Dot(n, db), sc = Vector3D.Dot(n, dc);
-            inRange = Range.Box(Math.Max(Range.MaxAbs(da), Math.Max(Range.MaxAbs(db), Range.MaxAbs(dc))));
+            inRange = Range.Box(Num.Max(Range.MaxAbs(da), Num.Max(Range.MaxAbs(db), Range.MaxAbs(dc))));
             var low = a;
             if (sb < sa) { low = b; sa = sb; }
             return sc < sa ? c : low;
@@ -296,7 +296,7 @@ namespace ProximityLib.Double
             var k = box.ToLocal(n);
             var q = new Vector3D(Lowest(k.X, box.Lo.X, box.Hi.X), Lowest(k.Y, box.Lo.Y, box.Hi.Y), Lowest(k.Z, box.Lo.Z, box.Hi.Z));
             s = Vector3D.Dot(n, d) + Vector3D.Dot(k, q);
-            inRange = Range.Box(Math.Max(Range.MaxAbs(d), Range.MaxAbs(box.Hi - box.Lo))) & (s <= 0 | Range.In(s * s));
+            inRange = Range.Box(Num.Max(Range.MaxAbs(d), Range.MaxAbs(box.Hi - box.Lo))) & (s <= 0 | Range.In(s * s));
             return q;
         }
 

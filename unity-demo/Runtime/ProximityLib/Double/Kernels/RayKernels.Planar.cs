@@ -9,7 +9,7 @@ namespace ProximityLib.Double
     internal static partial class Kernels
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double MaxAbs(Vector2D v) => Math.Max(Math.Abs(v.X), Math.Abs(v.Y));
+        private static double MaxAbs(Vector2D v) => Num.Max(Math.Abs(v.X), Math.Abs(v.Y));
 
         /// <summary>The unit normal of direction e (non-zero) on the side the ray d comes from (−(e's left normal) when d runs along it to the left).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -30,7 +30,7 @@ namespace ProximityLib.Double
         {
             var wp = p - o;
             var wq = q - o;
-            inRange = Range.Box(Math.Max(MaxAbs(wp), MaxAbs(wq)));
+            inRange = Range.Box(Num.Max(MaxAbs(wp), MaxAbs(wq)));
             if (p == q)
             {
                 var h = RayPoint(o.To3(), d.To3(), p.To3(), out _);
@@ -97,7 +97,7 @@ namespace ProximityLib.Double
             var wa = a - o;
             var wb = b - o;
             var wc = c - o;
-            inRange = Range.Box(Math.Max(MaxAbs(wa), Math.Max(MaxAbs(wb), MaxAbs(wc))));
+            inRange = Range.Box(Num.Max(MaxAbs(wa), Num.Max(MaxAbs(wb), MaxAbs(wc))));
             double area = Vector2D.Cross(b - a, c - a);
             if (area == 0) return RayCollinear2(o, d, a, b, c);
             if (area < 0) { var swap = b; b = c; c = swap; swap = wb; wb = wc; wc = swap; }

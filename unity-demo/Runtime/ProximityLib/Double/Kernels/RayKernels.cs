@@ -33,7 +33,7 @@ namespace ProximityLib.Double
         public static RayHit3 RaySphere(Vector3D o, Vector3D d, Vector3D center, double r, out bool inRange)
         {
             var w = o - center;
-            inRange = Range.Box(Math.Max(Range.MaxAbs(w), r));
+            inRange = Range.Box(Num.Max(Range.MaxAbs(w), r));
             double wl = w.Length;
             // On the surface; a zero radius (w zero, or so small its length underflows) has only −Direction (docs).
             if (wl <= r) return wl < r ? RayHit3.Inside(o) : new RayHit3(0, o, r == 0 ? -d : Unit(w, -d), false);
@@ -66,7 +66,7 @@ namespace ProximityLib.Double
         {
             var w = o - a;
             var e = b - a;
-            inRange = Range.Box(Math.Max(Math.Max(Range.MaxAbs(w), Range.MaxAbs(e)), r));
+            inRange = Range.Box(Num.Max(Num.Max(Range.MaxAbs(w), Range.MaxAbs(e)), r));
             var res = PointSegmentResidual(o, a, b, out _, out double ee);
             double rl = res.Length;
             if (rl <= r) return rl < r ? RayHit3.Inside(o) : new RayHit3(0, o, r == 0 ? -d : Unit(res, -d), false);
@@ -144,7 +144,7 @@ namespace ProximityLib.Double
         public static RayHit3 RayBox(Vector3D o, Vector3D d, in Box box, out bool inRange)
         {
             var w = o - box.Origin;
-            inRange = Range.Box(Math.Max(Range.MaxAbs(w), Math.Max(Range.MaxAbs(box.Lo), Range.MaxAbs(box.Hi))));
+            inRange = Range.Box(Num.Max(Range.MaxAbs(w), Num.Max(Range.MaxAbs(box.Lo), Range.MaxAbs(box.Hi))));
             int how = SlabCast(box.ToLocal(w), box.ToLocal(d), box.Lo, box.Hi, box.Planar, out double enter, out var q, out int face, out bool up);
             if (how < 0) return RayHit3.Miss;
             if (how == 0) return RayHit3.Inside(o);
@@ -163,7 +163,7 @@ namespace ProximityLib.Double
         {
             var p = o - min;
             var hi = max - min;
-            inRange = Range.Box(Math.Max(Range.MaxAbs(p), Range.MaxAbs(hi))); // the box form's Lo is 0 here
+            inRange = Range.Box(Num.Max(Range.MaxAbs(p), Range.MaxAbs(hi))); // the box form's Lo is 0 here
             int how = SlabCast(p, d, default, hi, planar, out double enter, out var q, out int face, out bool up);
             if (how < 0) return RayHit3.Miss;
             if (how == 0) return RayHit3.Inside(o);
@@ -266,7 +266,7 @@ namespace ProximityLib.Double
         {
             var wa = a - o;
             var wb = b - o;
-            double m = Math.Max(Range.MaxAbs(wa), Range.MaxAbs(wb));
+            double m = Num.Max(Range.MaxAbs(wa), Range.MaxAbs(wb));
             inRange = Range.Box(m);
             double tol = PassThrough * m;
             var res = PointSegmentResidual(o, a, b, out double u);
@@ -314,7 +314,7 @@ namespace ProximityLib.Double
                 skew = Math.Abs(s) <= double.MaxValue / 4;
             }
             var q = skew && s != 0 ? w + e * s : w; // the approach's offset from o
-            m = Math.Max(m, Range.MaxAbs(q));
+            m = Num.Max(m, Range.MaxAbs(q));
             inRange = Range.Box(m);
             double tol = PassThrough * m;
             // The origin on the target: its residual from the target, by the point–line kernel.
@@ -338,7 +338,7 @@ namespace ProximityLib.Double
             var a = A - o;
             var b = B - o;
             var c = C - o;
-            double m = Math.Max(Range.MaxAbs(a), Math.Max(Range.MaxAbs(b), Range.MaxAbs(c))), m2 = m * m;
+            double m = Num.Max(Range.MaxAbs(a), Num.Max(Range.MaxAbs(b), Range.MaxAbs(c))), m2 = m * m;
             inRange = Range.In(m2 * m2) || m == 0;
             double adx = Math.Abs(d.X), ady = Math.Abs(d.Y), adz = Math.Abs(d.Z);
             int kz = adx >= ady ? (adx >= adz ? 0 : 2) : (ady >= adz ? 1 : 2);
