@@ -351,7 +351,7 @@ namespace ProximityLib.Double
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static double AxisSpanGap(double p, double q, double lo, double hi) =>
-            Math.Max(0, Math.Max(Math.Min(p, q) - hi, lo - Math.Max(p, q)));
+            Num.Max(Num.Max(Num.Min(p, q) - hi, lo - Num.Max(p, q)), 0); // squared by the caller: a zero's sign is lost
 
         /// <summary>
         /// The largest magnitude among the boxes' relative position and extents: within [2^-450, 2^450] (or 0) the box

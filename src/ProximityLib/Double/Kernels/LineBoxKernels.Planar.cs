@@ -25,7 +25,7 @@ namespace ProximityLib.Double
                 inRange &= Range.In(g);
                 return new DistanceResult2(Math.Sqrt(g), g, o + u * t, box.Origin + box.ToWorldOffset(c + ClampLocal2(e, -h, h)), t, 0);
             }
-            double depth = Math.Max(0, LineBoxPenetration2(m, d, h, ray, out var dir));
+            double depth = Num.Max(LineBoxPenetration2(m, d, h, ray, out var dir), 0);
             LineBoxNearest2(m + dir * depth, d, h, ray, out t, out e);
             var onLine = o + u * t;
             return new DistanceResult2(-depth, 0, onLine, depth > 0 ? box.Origin + box.ToWorldOffset(c + ClampLocal2(e, -h, h)) : onLine, t, 0);

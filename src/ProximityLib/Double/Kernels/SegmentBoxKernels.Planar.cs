@@ -68,7 +68,7 @@ namespace ProximityLib.Double
                 return Math.Sqrt(d2);
             }
 
-            double depth = Math.Max(0, SegmentBoxPenetration2(la - c, ld, h, out var dir));
+            double depth = Num.Max(SegmentBoxPenetration2(la - c, ld, h, out var dir), 0);
             var moved = la + dir * depth;
             SegmentBoxLocal2(moved, ld, lo, hi, out t);
             d2 = 0;
@@ -145,8 +145,8 @@ namespace ProximityLib.Double
         private static void TryFaceAxis2(double m, double d, double h, Vector2D n, ref double best, ref Vector2D dir)
         {
             double e = m + d;
-            double down = Math.Max(m, e) + h;
-            double up = h - Math.Min(m, e);
+            double down = Num.Max(m, e) + h;
+            double up = h - Num.Min(m, e);
             if (down < best) { best = down; dir = -n; }
             if (up < best) { best = up; dir = n; }
         }

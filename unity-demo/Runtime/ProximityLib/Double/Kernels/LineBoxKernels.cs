@@ -35,7 +35,7 @@ namespace ProximityLib.Double
                 inRange &= Range.In(g);
                 return new DistanceResult3(Math.Sqrt(g), g, o + u * t, box.Origin + box.ToWorldOffset(c + Clamp(e, -h, h)), t, 0);
             }
-            double depth = Math.Max(0, LineBoxPenetration(m, d, h, box.Planar, ray, out var dir));
+            double depth = Num.Max(LineBoxPenetration(m, d, h, box.Planar, ray, out var dir), 0);
             // The line moved by the push just touches the box: its closest pair there, the line's point moved back.
             LineBoxNearest(m + dir * depth, d, h, ray, out t, out e);
             var onLine = o + u * t;
@@ -163,7 +163,7 @@ namespace ProximityLib.Double
                 }
                 // Apart by the verdict but touching to rounding: the touching branch below.
             }
-            double depth = Math.Max(0, SegmentBoxPenetration(la - c, ld, h, box.Planar, out var dir));
+            double depth = Num.Max(SegmentBoxPenetration(la - c, ld, h, box.Planar, out var dir), 0);
             // The push direction separates the axis from the box even when the axis only touches it (depth 0): a face
             // normal there could lead the rest of the axis back into the box.
             var outward = box.ToWorldOffset(dir);

@@ -163,7 +163,7 @@ namespace ProximityLib.Double
                 return Math.Sqrt(d2);
             }
 
-            double depth = Math.Max(0, SegmentBoxPenetration(la - c, ld, h, planar, out var dir));
+            double depth = Num.Max(SegmentBoxPenetration(la - c, ld, h, planar, out var dir), 0);
             // The segment moved by the push just touches the box: its closest pair there, the segment's point moved back.
             var moved = la + dir * depth;
             SegmentBoxLocal(moved, ld, lo, hi, out t);
@@ -203,8 +203,8 @@ namespace ProximityLib.Double
         private static void TryFaceAxis(double m, double d, double h, Vector3D n, ref double best, ref Vector3D dir)
         {
             double e = m + d;
-            double down = Math.Max(m, e) + h; // moving the segment by −n·down clears the box
-            double up = h - Math.Min(m, e);   // moving it by +n·up clears the box
+            double down = Num.Max(m, e) + h; // moving the segment by −n·down clears the box
+            double up = h - Num.Min(m, e);   // moving it by +n·up clears the box
             if (down < best) { best = down; dir = -n; }
             if (up < best) { best = up; dir = n; }
         }

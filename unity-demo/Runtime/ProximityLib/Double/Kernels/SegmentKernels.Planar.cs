@@ -49,7 +49,7 @@ namespace ProximityLib.Double
             }
             double si = sNum / nn, ti = tNum / nn;
             double b = Vector2D.Dot(d0k, d1k), c = -Vector2D.Dot(d0k, wk), f = -Vector2D.Dot(d1k, wk);
-            double outS = Math.Max(-si, si - 1), outT = Math.Max(-ti, ti - 1);
+            double outS = Num.Max(-si, si - 1), outT = Num.Max(-ti, ti - 1);
             if (outS > outT || (outS == outT && !Order.Swap(a0.To3(), a1.To3(), b0.To3(), b1.To3()))) ClampFirst(ak, ek, b, c, f, si, out s, out t);
             else ClampFirst(ek, ak, b, -f, -c, ti, out t, out s); // the mirror image: t first
             var v = d0k * s - d1k * t - wk;

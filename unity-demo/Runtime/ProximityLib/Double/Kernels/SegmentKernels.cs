@@ -69,7 +69,7 @@ namespace ProximityLib.Double
             // underflow at the small end of the fast range, and the parameters would then not scale exactly. Scaling
             // by k is exact, so elsewhere these are the unscaled values' bits.
             double b = Vector3D.Dot(d0k, d1k), c = -Vector3D.Dot(d0k, wk), f = -Vector3D.Dot(d1k, wk);
-            double outS = Math.Max(-si, si - 1), outT = Math.Max(-ti, ti - 1);
+            double outS = Num.Max(-si, si - 1), outT = Num.Max(-ti, ti - 1);
             if (outS > outT || (outS == outT && !Order.Swap(a0, a1, b0, b1))) ClampFirst(ak, ek, b, c, f, si, out s, out t);
             else ClampFirst(ek, ak, b, -f, -c, ti, out t, out s); // the mirror image: t first
             return ScaledResidual(d0k, d1k, wk, 1 / k, s, t, sized, out inRange);
