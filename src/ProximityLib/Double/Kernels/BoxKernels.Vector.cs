@@ -51,7 +51,7 @@ namespace ProximityLib.Double
             fixed (Obb3* pb = &b)
             {
                 Vector256<double> oa = Load(&pa->Min.X), hiA = LoadLast(&pa->Max.X) - oa, hb = LoadLast(&pb->HalfExtents.X), ob = Load(&pb->Center.X);
-                int inRange = Range.Box(BoxSize(ob - oa, hiA - Vector256<double>.Zero, hb - (-hb))) ? 2 : 0;
+                int inRange = Range.Box(BoxSize(ob - oa, hiA, hb + hb)) ? 2 : 0;
                 Axes(pb, out var bx, out var by, out var bz);
                 return inRange | (OverlapsVector(oa, Vector256.Create(1.0, 0, 0, 0), Vector256.Create(0, 1.0, 0, 0), Vector256.Create(0, 0, 1.0, 0), Vector256<double>.Zero, hiA,
                     ob, bx, by, bz, -hb, hb) ? 1 : 0);
@@ -87,7 +87,7 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static double BoxSize(Vector256<double> d, Vector256<double> ea, Vector256<double> eb)
         {
-            // The hardware's max (Vector256.Max spends seven more instructions on NaN and zero-sign rules): the lanes are
+            // The hardware's max (Vector256.Max spends eight more instructions on NaN and zero-sign rules): the lanes are
             // magnitudes, never NaN (finite shapes; an overflowed difference is +∞, which maxpd orders).
             var m = Vector256.MaxNative(Vector256.Abs(d), Vector256.MaxNative(Vector256.Abs(ea), Vector256.Abs(eb)));
             m = Vector256.MaxNative(m, Avx.Permute(m, 0b0101));
@@ -166,7 +166,7 @@ namespace ProximityLib.Double
                 g3 = CrossOverlap(a, b, ha, hb, t, ay, cx, cy, cz);
                 g4 = CrossOverlap(a, b, ha, hb, t, az, cx, cy, cz);
             }
-            // The hardware's min (Vector256.Min spends seven more instructions per call on NaN and zero-sign rules): the
+            // The hardware's min (Vector256.Min spends eight more instructions per call on NaN and zero-sign rules): the
             // lanes are never NaN in range, and only which lanes equal the least matters, where −0 == +0.
             var m = Vector256.MinNative(Vector256.MinNative(Vector256.MinNative(g0, g1), Vector256.MinNative(g2, g3)), g4);
             m = Vector256.MinNative(m, Avx.Permute(m, 0b0101));
