@@ -31,8 +31,8 @@ namespace ProximityLib.Double
         public Vector3D Axis(int i) => i == 0 ? X : (i == 1 ? Y : Z);
 
         /// <summary>Box-local centre and half-extents; exact for both AABB ([0, ext]) and OBB ([−h, h]) forms.</summary>
-        public Vector3D LocalCenter => (Lo + Hi) * 0.5;
-        public Vector3D Half => (Hi - Lo) * 0.5;
+        public Vector3D LocalCenter { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => (Lo + Hi) * 0.5; }
+        public Vector3D Half { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => (Hi - Lo) * 0.5; }
 
         public Box Translated(Vector3D by) => new Box(Origin + by, X, Y, Z, Lo, Hi, Planar);
     }
@@ -58,7 +58,7 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public Vector2D ToWorldOffset(Vector2D local) => X * local.X + Y * local.Y;
 
-        public Vector2D LocalCenter => (Lo + Hi) * 0.5;
-        public Vector2D Half => (Hi - Lo) * 0.5;
+        public Vector2D LocalCenter { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => (Lo + Hi) * 0.5; }
+        public Vector2D Half { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => (Hi - Lo) * 0.5; }
     }
 }

@@ -25,34 +25,44 @@ namespace ProximityLib.Double
         public static Vector2D UnitY { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => new Vector2D(0, 1); }
 
         /// <summary>The squared Euclidean length.</summary>
-        public double LengthSquared => X * X + Y * Y;
+        public double LengthSquared { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => X * X + Y * Y; }
         /// <summary>The Euclidean length.</summary>
         public double Length { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => Math.Sqrt(LengthSquared); }
         /// <summary>True when every component is finite.</summary>
         public bool IsFinite => double.IsFinite(X) && double.IsFinite(Y);
 
         /// <summary>The dot product.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double Dot(Vector2D a, Vector2D b) => a.X * b.X + a.Y * b.Y;
         /// <summary>The scalar cross product a.X*b.Y - a.Y*b.X.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double Cross(Vector2D a, Vector2D b) => a.X * b.Y - a.Y * b.X;
         /// <summary>The Euclidean distance between two points.</summary>
         public static double Distance(Vector2D a, Vector2D b) => (a - b).Length;
 
         /// <summary>Component-wise sum.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Vector2D operator +(Vector2D a, Vector2D b) => new Vector2D(a.X + b.X, a.Y + b.Y);
         /// <summary>Component-wise difference.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Vector2D operator -(Vector2D a, Vector2D b) => new Vector2D(a.X - b.X, a.Y - b.Y);
         /// <summary>Negation.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Vector2D operator -(Vector2D a) => new Vector2D(-a.X, -a.Y);
         /// <summary>Scaling by a scalar.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Vector2D operator *(Vector2D a, double s) => new Vector2D(a.X * s, a.Y * s);
         /// <summary>Scaling by a scalar.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Vector2D operator *(double s, Vector2D a) => new Vector2D(a.X * s, a.Y * s);
         /// <summary>Division by a scalar.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Vector2D operator /(Vector2D a, double s) => new Vector2D(a.X / s, a.Y / s);
         /// <summary>Exact component-wise equality.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool operator ==(Vector2D a, Vector2D b) => a.X == b.X && a.Y == b.Y;
         /// <summary>Exact component-wise inequality.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool operator !=(Vector2D a, Vector2D b) => !(a == b);
 
         /// <summary>Widens a float vector exactly.</summary>

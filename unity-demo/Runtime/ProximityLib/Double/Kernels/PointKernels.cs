@@ -389,6 +389,7 @@ namespace ProximityLib.Double
             return best;
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Vector3D FacePoint(Vector3D q, Vector3D lo, Vector3D hi, int face) => face switch
         {
             0 => new Vector3D(lo.X, q.Y, q.Z),
@@ -399,6 +400,7 @@ namespace ProximityLib.Double
             _ => new Vector3D(q.X, q.Y, hi.Z),
         };
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Vector3D FaceNormal(int face) => face switch
         {
             0 => new Vector3D(-1, 0, 0),
