@@ -64,7 +64,7 @@ namespace ProximityLib.Double
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static double Size2(in Box2 a, in Box2 b) =>
-            Num.Max(MaxAbs(b.Origin - a.Origin), Num.Max(MaxAbs(a.Hi - a.Lo), MaxAbs(b.Hi - b.Lo)));
+            Range.MaxAbs(b.Origin - a.Origin, a.Hi - a.Lo, b.Hi - b.Lo);
 
         /// <summary><see cref="BoxBoxOverlaps2(in Box2, in Box2)"/>, with whether the boxes' magnitudes allow the fast path.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -359,7 +359,7 @@ namespace ProximityLib.Double
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static double Size(in Box a, in Box b) =>
-            Num.Max(Range.MaxAbs(b.Origin - a.Origin), Num.Max(Range.MaxAbs(a.Hi - a.Lo), Range.MaxAbs(b.Hi - b.Lo)));
+            Range.MaxAbs(b.Origin - a.Origin, a.Hi - a.Lo, b.Hi - b.Lo);
 
         /// <summary><see cref="BoxBoxOverlaps(in Box, in Box)"/>, with whether the boxes' magnitudes allow the fast path.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

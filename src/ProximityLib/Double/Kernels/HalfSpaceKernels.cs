@@ -98,7 +98,7 @@ namespace ProximityLib.Double
             var db = b - p;
             var dc = c - p;
             double sa = Vector3D.Dot(n, da), sb = Vector3D.Dot(n, db), sc = Vector3D.Dot(n, dc);
-            inRange = Range.Box(Num.Max(Range.MaxAbs(da), Num.Max(Range.MaxAbs(db), Range.MaxAbs(dc))));
+            inRange = Range.Box(Range.MaxAbs(da, db, dc));
             var low = a;
             if (sb < sa) { low = b; sa = sb; }
             return sc < sa ? c : low;

@@ -270,7 +270,7 @@ namespace ProximityLib.Double
         {
             // The offset's own size counts: at an AABB's min corner c is 0, and a k from c and a zero-length axis alone
             // (2^1022) overflowed the offset, so that vertex's normal depended on the scale (fuzz seed 122).
-            double k = Num.InversePowerOfTwo(Num.Max(Num.Max(Range.MaxAbs(b - a), Range.MaxAbs(c)), Range.MaxAbs(a - box.Origin)));
+            double k = Num.InversePowerOfTwo(Range.MaxAbs(b - a, c, a - box.Origin));
             var ck = c * k;
             VertexOffset(box.Origin.X, a.X, box.X.X, box.Y.X, box.Z.X, ck, k, out double hx, out double lx);
             VertexOffset(box.Origin.Y, a.Y, box.X.Y, box.Y.Y, box.Z.Y, ck, k, out double hy, out double ly);

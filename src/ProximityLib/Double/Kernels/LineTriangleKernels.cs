@@ -24,7 +24,7 @@ namespace ProximityLib.Double
             double ta = Vector3D.Dot(u, wa), tb = Vector3D.Dot(u, wb), tc = Vector3D.Dot(u, wc);
             lo = Math.Min(ta, Math.Min(tb, tc));
             hi = Math.Max(ta, Math.Max(tb, tc));
-            margin = Num.Max(Range.MaxAbs(wa), Num.Max(Range.MaxAbs(wb), Range.MaxAbs(wc))) * 9.094947017729282e-13;
+            margin = Range.MaxAbs(wa, wb, wc) * 9.094947017729282e-13;
             oa = -wa;
             eb = b - a;
             ec = c - a;

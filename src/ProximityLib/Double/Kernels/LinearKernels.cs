@@ -291,7 +291,7 @@ namespace ProximityLib.Double
         {
             double r2 = SegmentSegmentInline(a0, a1, b0, b1, out double s, out double t, out inRange);
             double dist = Math.Sqrt(r2);
-            double reach = Num.Max(Range.MaxAbs(b0 - a0), Num.Max(Range.MaxAbs(b1 - a0), Range.MaxAbs(a1 - a0)));
+            double reach = Range.MaxAbs(b0 - a0, b1 - a0, a1 - a0);
             if (!(dist > reach * NearTouch)) return LinearCapsule(Linear.Segment(a0, a1), ra, b0, b1, rb, planar, true, out inRange);
             var v = (b0 - a0) - ((a1 - a0) * s - (b1 - b0) * t); // as LinearSegment forms it, before the zeros' signs are normalised
             s += 0; t += 0; // −0 + 0 = 0
@@ -324,7 +324,7 @@ namespace ProximityLib.Double
             inRange &= r <= double.MaxValue;
             // A residual within 2^-49 of the axes' extent (from A's start) is rounding: its direction is noise (it can
             // point along an axis), so the axes count as meeting.
-            double reach = Num.Max(Range.MaxAbs(b0 - a.Start), Num.Max(Range.MaxAbs(b1 - a.Start), Range.MaxAbs(a.End - a.Start)));
+            double reach = Range.MaxAbs(b0 - a.Start, b1 - a.Start, a.End - a.Start);
             bool meet = dist <= reach * 1.7763568394002505e-15;
             Vector3D n;
             if (planar)

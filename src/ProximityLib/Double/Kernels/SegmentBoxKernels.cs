@@ -111,7 +111,7 @@ namespace ProximityLib.Double
         public static DistanceResult3 SegmentBox(Vector3D a, Vector3D b, in Box box, out bool inRange)
         {
             var ra = a - box.Origin;
-            inRange = Range.Box(Num.Max(Range.MaxAbs(ra), Num.Max(Range.MaxAbs(b - box.Origin), Range.MaxAbs(box.Hi - box.Lo))));
+            inRange = Range.Box(Range.MaxAbs(ra, b - box.Origin, box.Hi - box.Lo));
             double dist = InFrame(box.ToLocal(ra), box.ToLocal(b - a), box.Lo, box.Hi, box.Planar, ref inRange, out double d2, out double t, out var onBox, out bool touching);
             var onSegment = SegmentPoint(a, b, t);
             return new DistanceResult3(dist, d2, onSegment, touching ? onSegment : box.Origin + box.ToWorldOffset(onBox), t, 0);
@@ -128,7 +128,7 @@ namespace ProximityLib.Double
         {
             var ra = a - min;
             var extent = max - min;
-            inRange = Range.Box(Num.Max(Range.MaxAbs(ra), Num.Max(Range.MaxAbs(b - min), Range.MaxAbs(extent))));
+            inRange = Range.Box(Range.MaxAbs(ra, b - min, extent));
             double dist = InFrame(ra, b - a, default, extent, planar, ref inRange, out double d2, out double t, out var onBox, out bool touching);
             var onSegment = SegmentPoint(a, b, t);
             return new DistanceResult3(dist, d2, onSegment, touching ? onSegment : min + onBox, t, 0);
@@ -224,7 +224,7 @@ namespace ProximityLib.Double
         public static bool SegmentBoxOverlaps(Vector3D a, Vector3D b, in Box box, out bool inRange)
         {
             var ra = a - box.Origin;
-            inRange = Range.Box(Num.Max(Range.MaxAbs(ra), Num.Max(Range.MaxAbs(b - box.Origin), Range.MaxAbs(box.Hi - box.Lo))));
+            inRange = Range.Box(Range.MaxAbs(ra, b - box.Origin, box.Hi - box.Lo));
             return SegmentBoxOverlapsLocal(box.ToLocal(ra) - box.LocalCenter, box.ToLocal(b - a), box.Half, box.Planar);
         }
 
@@ -238,7 +238,7 @@ namespace ProximityLib.Double
         {
             var ra = a - min;
             var extent = max - min;
-            inRange = Range.Box(Num.Max(Range.MaxAbs(ra), Num.Max(Range.MaxAbs(b - min), Range.MaxAbs(extent))));
+            inRange = Range.Box(Range.MaxAbs(ra, b - min, extent));
             var half = extent * 0.5;
             return SegmentBoxOverlapsLocal(ra - half, b - a, half, planar);
         }

@@ -70,6 +70,22 @@ namespace ProximityLib.Double
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double MaxAbs(Vector3D v) => Num.Max(Math.Abs(v.X), Num.Max(Math.Abs(v.Y), Math.Abs(v.Z)));
+
+        /// <summary>The largest magnitude of v's components, as for 3D.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double MaxAbs(Vector2D v) => Num.Max(Math.Abs(v.X), Math.Abs(v.Y));
+
+        /// <summary>The largest magnitude over three vectors' components (a range check's offsets and extents).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double MaxAbs(Vector3D a, Vector3D b, Vector3D c) => Num.Max(MaxAbs(a), Num.Max(MaxAbs(b), MaxAbs(c)));
+
+        /// <summary>As for 3D.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double MaxAbs(Vector2D a, Vector2D b, Vector2D c) => Num.Max(MaxAbs(a), Num.Max(MaxAbs(b), MaxAbs(c)));
+
+        /// <summary>The largest magnitude over four vectors' components.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double MaxAbs(Vector3D a, Vector3D b, Vector3D c, Vector3D d) => Num.Max(Num.Max(MaxAbs(a), MaxAbs(b)), Num.Max(MaxAbs(c), MaxAbs(d)));
     }
 
     /// <summary>A shape that the slow path can measure and rescale by a power of two.</summary>
@@ -102,7 +118,7 @@ namespace ProximityLib.Double
             if (!_started) { _lo = _hi = p; _started = true; }
             _lo = new Vector3D(Math.Min(_lo.X, p.X), Math.Min(_lo.Y, p.Y), Math.Min(_lo.Z, p.Z));
             _hi = new Vector3D(Math.Max(_hi.X, p.X), Math.Max(_hi.Y, p.Y), Math.Max(_hi.Z, p.Z));
-            _abs = Math.Max(_abs, MaxAbs(p));
+            _abs = Math.Max(_abs, Range.MaxAbs(p));
         }
 
         public void Point(Vector2D p) => Point(p.To3());
@@ -117,7 +133,7 @@ namespace ProximityLib.Double
         public void Decide()
         {
             double abs = Math.Max(_abs, _len);
-            double rel = Math.Max(_len, MaxAbs(_hi - _lo));
+            double rel = Math.Max(_len, Range.MaxAbs(_hi - _lo));
             _translate = rel < abs * Range.Min;
             double m = _translate ? rel : abs;
             int e = m > 0 ? Exponent(m) : 0;
@@ -148,7 +164,6 @@ namespace ProximityLib.Double
         public RayHit2 Back(in RayHit2 h) =>
             h.Hit ? new RayHit2(h.T * _up1 * _up2, Vector2D.From3(Back(h.Point.To3())), h.Normal, h.StartsInside) : h;
 
-        private static double MaxAbs(Vector3D v) => Math.Max(Math.Abs(v.X), Math.Max(Math.Abs(v.Y), Math.Abs(v.Z)));
 
         /// <summary>floor(log2 m) for a finite m &gt; 0, subnormals included.</summary>
         private static int Exponent(double m)

@@ -14,7 +14,7 @@ namespace ProximityLib.Double
         public static DistanceResult2 LineBox2(Vector2D o, Vector2D u, bool ray, in Box2 box, out bool inRange)
         {
             var ro = o - box.Origin;
-            inRange = Range.Box(Num.Max(MaxAbs(ro), MaxAbs(box.Hi - box.Lo)));
+            inRange = Range.Box(Num.Max(Range.MaxAbs(ro), Range.MaxAbs(box.Hi - box.Lo)));
             var c = box.LocalCenter;
             var h = box.Half;
             var m = box.ToLocal(ro) - c;
@@ -87,7 +87,7 @@ namespace ProximityLib.Double
         public static bool LineBoxOverlaps2(Vector2D o, Vector2D u, bool ray, in Box2 box, out bool inRange)
         {
             var ro = o - box.Origin;
-            inRange = Range.Box(Num.Max(MaxAbs(ro), MaxAbs(box.Hi - box.Lo)));
+            inRange = Range.Box(Num.Max(Range.MaxAbs(ro), Range.MaxAbs(box.Hi - box.Lo)));
             return LineBoxOverlapsLocal2(box.ToLocal(ro) - box.LocalCenter, box.ToLocal(u), box.Half, ray);
         }
 

@@ -361,7 +361,7 @@ namespace ProximityLib.Double
                 double d2 = diff.LengthSquared;
                 double d = Math.Sqrt(d2);
                 inRange = Range.In(d2);
-                return new PointContact(d, d2, c, d > 0 ? diff * (1 / d) : Unit(diff / MaxAbs(diff)), 0);
+                return new PointContact(d, d2, c, d > 0 ? diff * (1 / d) : Unit(diff / Range.MaxAbs(diff)), 0);
             }
             // Inside, the depth is a difference of coordinates: exact up to one rounding at any magnitude.
             inRange = true;
@@ -410,9 +410,6 @@ namespace ProximityLib.Double
             4 => new Vector3D(0, 0, -1),
             _ => new Vector3D(0, 0, 1),
         };
-
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double MaxAbs(Vector3D v) => Num.Max(Math.Abs(v.X), Num.Max(Math.Abs(v.Y), Math.Abs(v.Z)));
 
         private static Vector3D Unit(Vector3D v) => v / v.Length;
 

@@ -8,9 +8,6 @@ namespace ProximityLib.Double
     // 2D ray casts that need 2D-only logic: in the plane a segment, line or ray is crossed, and a triangle is a solid.
     internal static partial class Kernels
     {
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double MaxAbs(Vector2D v) => Num.Max(Math.Abs(v.X), Math.Abs(v.Y));
-
         /// <summary>The unit normal of direction e (non-zero) on the side the ray d comes from (−(e's left normal) when d runs along it to the left).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Vector2D Facing(Vector2D e, Vector2D d)
@@ -30,7 +27,7 @@ namespace ProximityLib.Double
         {
             var wp = p - o;
             var wq = q - o;
-            inRange = Range.Box(Num.Max(MaxAbs(wp), MaxAbs(wq)));
+            inRange = Range.Box(Num.Max(Range.MaxAbs(wp), Range.MaxAbs(wq)));
             if (p == q)
             {
                 var h = RayPoint(o.To3(), d.To3(), p.To3(), out _);
@@ -66,7 +63,7 @@ namespace ProximityLib.Double
         public static RayHit2 RayLine2(Vector2D o, Vector2D d, Vector2D p, Vector2D e, bool half, out bool inRange)
         {
             var w = p - o;
-            inRange = Range.Box(MaxAbs(w));
+            inRange = Range.Box(Range.MaxAbs(w));
             double fp = Vector2D.Cross(d, w), fe = Vector2D.Cross(d, e);
             if (fe == 0)
             {
@@ -97,7 +94,7 @@ namespace ProximityLib.Double
             var wa = a - o;
             var wb = b - o;
             var wc = c - o;
-            inRange = Range.Box(Num.Max(MaxAbs(wa), Num.Max(MaxAbs(wb), MaxAbs(wc))));
+            inRange = Range.Box(Range.MaxAbs(wa, wb, wc));
             double area = Vector2D.Cross(b - a, c - a);
             if (area == 0) return RayCollinear2(o, d, a, b, c);
             if (area < 0) { var swap = b; b = c; c = swap; swap = wb; wb = wc; wc = swap; }

@@ -144,7 +144,7 @@ namespace ProximityLib.Double
         public static RayHit3 RayBox(Vector3D o, Vector3D d, in Box box, out bool inRange)
         {
             var w = o - box.Origin;
-            inRange = Range.Box(Num.Max(Range.MaxAbs(w), Num.Max(Range.MaxAbs(box.Lo), Range.MaxAbs(box.Hi))));
+            inRange = Range.Box(Range.MaxAbs(w, box.Lo, box.Hi));
             int how = SlabCast(box.ToLocal(w), box.ToLocal(d), box.Lo, box.Hi, box.Planar, out double enter, out var q, out int face, out bool up);
             if (how < 0) return RayHit3.Miss;
             if (how == 0) return RayHit3.Inside(o);
@@ -338,7 +338,7 @@ namespace ProximityLib.Double
             var a = A - o;
             var b = B - o;
             var c = C - o;
-            double m = Num.Max(Range.MaxAbs(a), Num.Max(Range.MaxAbs(b), Range.MaxAbs(c))), m2 = m * m;
+            double m = Range.MaxAbs(a, b, c), m2 = m * m;
             inRange = Range.In(m2 * m2) || m == 0;
             double adx = Math.Abs(d.X), ady = Math.Abs(d.Y), adz = Math.Abs(d.Z);
             int kz = adx >= ady ? (adx >= adz ? 0 : 2) : (ady >= adz ? 1 : 2);

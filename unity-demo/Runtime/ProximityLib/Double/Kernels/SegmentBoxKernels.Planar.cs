@@ -16,7 +16,7 @@ namespace ProximityLib.Double
         public static DistanceResult2 SegmentBox2(Vector2D a, Vector2D b, in Box2 box, out bool inRange)
         {
             var ra = a - box.Origin;
-            inRange = Range.Box(Num.Max(MaxAbs(ra), Num.Max(MaxAbs(b - box.Origin), MaxAbs(box.Hi - box.Lo))));
+            inRange = Range.Box(Range.MaxAbs(ra, b - box.Origin, box.Hi - box.Lo));
             double dist = InFrame2(box.ToLocal(ra), box.ToLocal(b - a), box.Lo, box.Hi, ref inRange, out double d2, out double t, out var onBox, out bool touching);
             var onSegment = SegmentPoint2(a, b, t);
             return new DistanceResult2(dist, d2, onSegment, touching ? onSegment : box.Origin + box.ToWorldOffset(onBox), t, 0);
@@ -28,7 +28,7 @@ namespace ProximityLib.Double
         {
             var ra = a - min;
             var extent = max - min;
-            inRange = Range.Box(Num.Max(MaxAbs(ra), Num.Max(MaxAbs(b - min), MaxAbs(extent))));
+            inRange = Range.Box(Range.MaxAbs(ra, b - min, extent));
             double dist = InFrame2(ra, b - a, default, extent, ref inRange, out double d2, out double t, out var onBox, out bool touching);
             var onSegment = SegmentPoint2(a, b, t);
             return new DistanceResult2(dist, d2, onSegment, touching ? onSegment : min + onBox, t, 0);
@@ -39,7 +39,7 @@ namespace ProximityLib.Double
         public static bool SegmentBoxOverlaps2(Vector2D a, Vector2D b, in Box2 box, out bool inRange)
         {
             var ra = a - box.Origin;
-            inRange = Range.Box(Num.Max(MaxAbs(ra), Num.Max(MaxAbs(b - box.Origin), MaxAbs(box.Hi - box.Lo))));
+            inRange = Range.Box(Range.MaxAbs(ra, b - box.Origin, box.Hi - box.Lo));
             return SegmentBoxOverlapsLocal2(box.ToLocal(ra) - box.LocalCenter, box.ToLocal(b - a), box.Half);
         }
 
@@ -49,7 +49,7 @@ namespace ProximityLib.Double
         {
             var ra = a - min;
             var extent = max - min;
-            inRange = Range.Box(Num.Max(MaxAbs(ra), Num.Max(MaxAbs(b - min), MaxAbs(extent))));
+            inRange = Range.Box(Range.MaxAbs(ra, b - min, extent));
             var half = extent * 0.5;
             return SegmentBoxOverlapsLocal2(ra - half, b - a, half);
         }
@@ -82,7 +82,7 @@ namespace ProximityLib.Double
         /// <summary><see cref="SegmentBoxLocal"/> in the plane: the bracketing of the convex piecewise quadratic by its slopes.</summary>
         private static double SegmentBoxLocal2(Vector2D a, Vector2D d, Vector2D lo, Vector2D hi, out double t)
         {
-            double kd = Num.InversePowerOfTwo(MaxAbs(d));
+            double kd = Num.InversePowerOfTwo(Range.MaxAbs(d));
             var dk = d * kd;
             double left = 0, right = 1;
             if (SlabSlope2(a, d, dk, lo, hi, 0) >= 0) right = 0;

@@ -205,7 +205,7 @@ namespace ProximityLib.Double
             var ra = a - o;
             var rb = b - o;
             var rc = c - o;
-            double size = Num.Max(Num.Max(Range.MaxAbs(ra), Range.MaxAbs(rb)), Num.Max(Range.MaxAbs(rc), Range.MaxAbs(box.Hi - box.Lo)));
+            double size = Range.MaxAbs(ra, rb, rc, box.Hi - box.Lo);
             inRange = Range.Box(size);
             double k = Num.InversePowerOfTwo(size);
             var la = box.ToLocal(ra);
@@ -232,7 +232,7 @@ namespace ProximityLib.Double
             var ra = a - o;
             var rb = b - o;
             var rc = c - o;
-            inRange = Range.Box(Num.Max(Num.Max(Range.MaxAbs(ra), Range.MaxAbs(rb)), Num.Max(Range.MaxAbs(rc), Range.MaxAbs(box.Hi - box.Lo))));
+            inRange = Range.Box(Range.MaxAbs(ra, rb, rc, box.Hi - box.Lo));
             return TriangleBoxSat(box.ToLocal(ra), box.ToLocal(rb), box.ToLocal(rc), box, false, out _, out _);
         }
 
@@ -248,7 +248,7 @@ namespace ProximityLib.Double
             var m0 = la - ctr;
             var m1 = lb - ctr;
             var m2 = lc - ctr;
-            double m = Num.Max(Num.Max(Range.MaxAbs(m0), Range.MaxAbs(m1)), Num.Max(Range.MaxAbs(m2), Range.MaxAbs(h)));
+            double m = Range.MaxAbs(m0, m1, m2, h);
             double k = m > 0 ? Num.InversePowerOfTwo(m) : 1;
             m0 *= k; m1 *= k; m2 *= k; h *= k;
             double best = double.PositiveInfinity;
