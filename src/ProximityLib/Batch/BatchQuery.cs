@@ -296,7 +296,7 @@ namespace ProximityLib.Batch
                 // (g, a power of two: exact) leaves squares. Where |n|²·g still underflows, the shorter segment times
                 // sin θ is below 2^−63, and the endpoint candidates are that close to the answer.
                 var n = Cross(d0, d1);
-                var g = PowerOfTwoInverse(Vector.Max(dd0, dd1));
+                var g = PowerOfTwoInverse(Runner.MaxNative(dd0, dd1));
                 var ng = new V3(n.X * g, n.Y * g, n.Z * g);
                 var nng = V3.Dot(n, ng);
                 var s = Vector.ConditionalSelect(Vector.GreaterThan(nng, Vector<float>.Zero),
@@ -307,10 +307,10 @@ namespace ProximityLib.Batch
                 var inv0 = Reciprocal(dd0);
                 var inv1 = Reciprocal(dd1);
                 var best = PointSegment2(d0.X * s - w.X, d0.Y * s - w.Y, d0.Z * s - w.Z, d1, inv1);
-                best = Vector.Min(best, PointSegment2(Runner.Negate(w.X), Runner.Negate(w.Y), Runner.Negate(w.Z), d1, inv1));
-                best = Vector.Min(best, PointSegment2(d0.X - w.X, d0.Y - w.Y, d0.Z - w.Z, d1, inv1));
-                best = Vector.Min(best, PointSegment2(w.X, w.Y, w.Z, d0, inv0));
-                best = Vector.Min(best, PointSegment2(w.X + d1.X, w.Y + d1.Y, w.Z + d1.Z, d0, inv0));
+                best = Runner.MinNative(best, PointSegment2(Runner.Negate(w.X), Runner.Negate(w.Y), Runner.Negate(w.Z), d1, inv1));
+                best = Runner.MinNative(best, PointSegment2(d0.X - w.X, d0.Y - w.Y, d0.Z - w.Z, d1, inv1));
+                best = Runner.MinNative(best, PointSegment2(w.X, w.Y, w.Z, d0, inv0));
+                best = Runner.MinNative(best, PointSegment2(w.X + d1.X, w.Y + d1.Y, w.Z + d1.Z, d0, inv0));
                 return Vector.SquareRoot(best);
             }
 
@@ -346,9 +346,9 @@ namespace ProximityLib.Batch
                 return MathF.Sqrt(best);
             }
 
-            /// <summary>The scalar lanes' minimum of two squared distances (never −0); NaN wins, as in the vector minimum.</summary>
+            /// <summary>The scalar lanes' minimum of two squared distances (never −0): minps's rule, as the vector lanes' <see cref="Runner.MinNative"/>.</summary>
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            private static float Min(float a, float b) => a < b || float.IsNaN(a) ? a : b;
+            private static float Min(float a, float b) => a < b ? a : b;
 
             /// <summary>
             /// 1/dd for a squared length dd, or 0 below 2^−126, where 1/dd could overflow: such a segment is shorter than
@@ -427,20 +427,20 @@ namespace ProximityLib.Batch
                 Vector<float> q20 = Vector.Abs(r20), q21 = Vector.Abs(r21), q22 = Vector.Abs(r22);
 
                 var sep = Vector.Abs(tx) - (ha.X + hb.X * q00 + hb.Y * q01 + hb.Z * q02);
-                sep = Vector.Max(sep, Vector.Abs(ty) - (ha.Y + hb.X * q10 + hb.Y * q11 + hb.Z * q12));
-                sep = Vector.Max(sep, Vector.Abs(tz) - (ha.Z + hb.X * q20 + hb.Y * q21 + hb.Z * q22));
-                sep = Vector.Max(sep, Vector.Abs(tx * r00 + ty * r10 + tz * r20) - (ha.X * q00 + ha.Y * q10 + ha.Z * q20 + hb.X));
-                sep = Vector.Max(sep, Vector.Abs(tx * r01 + ty * r11 + tz * r21) - (ha.X * q01 + ha.Y * q11 + ha.Z * q21 + hb.Y));
-                sep = Vector.Max(sep, Vector.Abs(tx * r02 + ty * r12 + tz * r22) - (ha.X * q02 + ha.Y * q12 + ha.Z * q22 + hb.Z));
-                sep = Vector.Max(sep, Cross(tz * r10 - ty * r20, ha.Y * q20 + ha.Z * q10, hb.Y, r11 * r20 - r21 * r10, hb.Z, r12 * r20 - r22 * r10));
-                sep = Vector.Max(sep, Cross(tz * r11 - ty * r21, ha.Y * q21 + ha.Z * q11, hb.X, r10 * r21 - r20 * r11, hb.Z, r12 * r21 - r22 * r11));
-                sep = Vector.Max(sep, Cross(tz * r12 - ty * r22, ha.Y * q22 + ha.Z * q12, hb.X, r10 * r22 - r20 * r12, hb.Y, r11 * r22 - r21 * r12));
-                sep = Vector.Max(sep, Cross(tx * r20 - tz * r00, ha.X * q20 + ha.Z * q00, hb.Y, r01 * r20 - r21 * r00, hb.Z, r02 * r20 - r22 * r00));
-                sep = Vector.Max(sep, Cross(tx * r21 - tz * r01, ha.X * q21 + ha.Z * q01, hb.X, r00 * r21 - r20 * r01, hb.Z, r02 * r21 - r22 * r01));
-                sep = Vector.Max(sep, Cross(tx * r22 - tz * r02, ha.X * q22 + ha.Z * q02, hb.X, r00 * r22 - r20 * r02, hb.Y, r01 * r22 - r21 * r02));
-                sep = Vector.Max(sep, Cross(ty * r00 - tx * r10, ha.X * q10 + ha.Y * q00, hb.Y, r11 * r00 - r01 * r10, hb.Z, r12 * r00 - r02 * r10));
-                sep = Vector.Max(sep, Cross(ty * r01 - tx * r11, ha.X * q11 + ha.Y * q01, hb.X, r10 * r01 - r00 * r11, hb.Z, r12 * r01 - r02 * r11));
-                return Vector.Max(sep, Cross(ty * r02 - tx * r12, ha.X * q12 + ha.Y * q02, hb.X, r10 * r02 - r00 * r12, hb.Y, r11 * r02 - r01 * r12));
+                sep = Runner.MaxNative(sep, Vector.Abs(ty) - (ha.Y + hb.X * q10 + hb.Y * q11 + hb.Z * q12));
+                sep = Runner.MaxNative(sep, Vector.Abs(tz) - (ha.Z + hb.X * q20 + hb.Y * q21 + hb.Z * q22));
+                sep = Runner.MaxNative(sep, Vector.Abs(tx * r00 + ty * r10 + tz * r20) - (ha.X * q00 + ha.Y * q10 + ha.Z * q20 + hb.X));
+                sep = Runner.MaxNative(sep, Vector.Abs(tx * r01 + ty * r11 + tz * r21) - (ha.X * q01 + ha.Y * q11 + ha.Z * q21 + hb.Y));
+                sep = Runner.MaxNative(sep, Vector.Abs(tx * r02 + ty * r12 + tz * r22) - (ha.X * q02 + ha.Y * q12 + ha.Z * q22 + hb.Z));
+                sep = Runner.MaxNative(sep, Cross(tz * r10 - ty * r20, ha.Y * q20 + ha.Z * q10, hb.Y, r11 * r20 - r21 * r10, hb.Z, r12 * r20 - r22 * r10));
+                sep = Runner.MaxNative(sep, Cross(tz * r11 - ty * r21, ha.Y * q21 + ha.Z * q11, hb.X, r10 * r21 - r20 * r11, hb.Z, r12 * r21 - r22 * r11));
+                sep = Runner.MaxNative(sep, Cross(tz * r12 - ty * r22, ha.Y * q22 + ha.Z * q12, hb.X, r10 * r22 - r20 * r12, hb.Y, r11 * r22 - r21 * r12));
+                sep = Runner.MaxNative(sep, Cross(tx * r20 - tz * r00, ha.X * q20 + ha.Z * q00, hb.Y, r01 * r20 - r21 * r00, hb.Z, r02 * r20 - r22 * r00));
+                sep = Runner.MaxNative(sep, Cross(tx * r21 - tz * r01, ha.X * q21 + ha.Z * q01, hb.X, r00 * r21 - r20 * r01, hb.Z, r02 * r21 - r22 * r01));
+                sep = Runner.MaxNative(sep, Cross(tx * r22 - tz * r02, ha.X * q22 + ha.Z * q02, hb.X, r00 * r22 - r20 * r02, hb.Y, r01 * r22 - r21 * r02));
+                sep = Runner.MaxNative(sep, Cross(ty * r00 - tx * r10, ha.X * q10 + ha.Y * q00, hb.Y, r11 * r00 - r01 * r10, hb.Z, r12 * r00 - r02 * r10));
+                sep = Runner.MaxNative(sep, Cross(ty * r01 - tx * r11, ha.X * q11 + ha.Y * q01, hb.X, r10 * r01 - r00 * r11, hb.Z, r12 * r01 - r02 * r11));
+                return Runner.MaxNative(sep, Cross(ty * r02 - tx * r12, ha.X * q12 + ha.Y * q02, hb.X, r10 * r02 - r00 * r12, hb.Y, r11 * r02 - r01 * r12));
             }
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -498,10 +498,10 @@ namespace ProximityLib.Batch
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             public Vector<float> Compute(int i)
             {
-                var gx = Vector.Max(new Vector<float>(_b.MinX, i) - _a.MaxX(i), _a.MinX(i) - new Vector<float>(_b.MaxX, i));
-                var gy = Vector.Max(new Vector<float>(_b.MinY, i) - _a.MaxY(i), _a.MinY(i) - new Vector<float>(_b.MaxY, i));
-                var gz = Vector.Max(new Vector<float>(_b.MinZ, i) - _a.MaxZ(i), _a.MinZ(i) - new Vector<float>(_b.MaxZ, i));
-                return Vector.Max(gx, Vector.Max(gy, gz));
+                var gx = Runner.MaxNative(new Vector<float>(_b.MinX, i) - _a.MaxX(i), _a.MinX(i) - new Vector<float>(_b.MaxX, i));
+                var gy = Runner.MaxNative(new Vector<float>(_b.MinY, i) - _a.MaxY(i), _a.MinY(i) - new Vector<float>(_b.MaxY, i));
+                var gz = Runner.MaxNative(new Vector<float>(_b.MinZ, i) - _a.MaxZ(i), _a.MinZ(i) - new Vector<float>(_b.MaxZ, i));
+                return Runner.MaxNative(gx, Runner.MaxNative(gy, gz));
             }
 
             /// <summary>
