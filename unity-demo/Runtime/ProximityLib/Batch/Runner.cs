@@ -96,10 +96,10 @@ namespace ProximityLib.Batch
         public static Vector<float> Clamp(Vector<float> x, Vector<float> lo, Vector<float> hi) => MinNative(MaxNative(x, lo), hi);
 
         // The hardware's maxps/minps. On .NET 9 and later Vector.Max/Min follow IEEE 754-2019 (NaN propagates, +0 > −0):
-        // nine instructions each on x64 without AVX-512 where maxps is one, and a batch kernel makes up to 15 such calls
-        // per vector. For operands that are never NaN (every lane inside the batch's range) and values whose zero sign
-        // does not matter (clamped gaps that are squared, separations and squared distances that are only compared
-        // with 0 or each other) the two agree. netstandard2.1 has only Vector.Max/Min.
+        // nine instructions each on x64 without AVX-512 where maxps is one, and a batch kernel makes up to 17 such calls
+        // per vector (segment–segment; OBB–OBB 14). For operands that are never NaN (every lane inside the batch's
+        // range) and values whose zero sign does not matter (clamped gaps that are squared, separations and squared
+        // distances that are only compared with 0 or each other) the two agree. netstandard2.1 has only Vector.Max/Min.
 #if NET
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Vector<float> MaxNative(Vector<float> a, Vector<float> b) => Vector.MaxNative(a, b);
