@@ -8,13 +8,13 @@ using ProximityReference;
 using ProximityReference.Fuzz;
 
 // Usage: dotnet run --project tests/ProximityLib.Accuracy -c Release -- [--cases N] [--seed S] [--family NAME] [--out FILE]
-//        ... -- --fuzz N [--fuzz-new M] [--fuzz-gaps G] [--fuzz-near H] [--seed S] [--start I] [--start-new J] [--start-gaps K] [--start-near L] [--threads T] [--repros R] [--out FILE] [--errors FILE]
+//        ... -- --fuzz N [--fuzz-new M] [--fuzz-gaps G] [--fuzz-near H] [--fuzz-shallow X] [--seed S] [--start I] [--start-new J] [--start-gaps K] [--start-near L] [--start-shallow Y] [--threads T] [--repros R] [--out FILE] [--errors FILE]
 //        ... -- --fuzz-replay SEED:INDEX
 //        ... -- --fuzz-casts N [--casts-start I] [--seed S] [--threads T] [--repros R] [--out FILE] [--errors FILE]
 //        ... -- --fuzz-casts-replay SEED:INDEX
 CultureInfo.CurrentCulture = CultureInfo.InvariantCulture;
 int cases = 20, seed = 2026;
-long fuzz = 0, start = 0, fuzzNew = -1, startNew = 0, fuzzGaps = -1, startGaps = 0, fuzzNear = -1, startNear = 0, casts = 0, castsStart = 0;
+long fuzz = 0, start = 0, fuzzNew = -1, startNew = 0, fuzzGaps = -1, startGaps = 0, fuzzNear = -1, startNear = 0, fuzzShallow = -1, startShallow = 0, casts = 0, castsStart = 0;
 int threads = Environment.ProcessorCount, repros = 20;
 string? output = null, replay = null, only = null, errors = null, castReplay = null;
 try
@@ -35,6 +35,8 @@ try
             case "--start-gaps": startGaps = long.Parse(args[++i]); break;
             case "--fuzz-near": fuzzNear = long.Parse(args[++i]); break;
             case "--start-near": startNear = long.Parse(args[++i]); break;
+            case "--fuzz-shallow": fuzzShallow = long.Parse(args[++i]); break;
+            case "--start-shallow": startShallow = long.Parse(args[++i]); break;
             case "--threads": threads = int.Parse(args[++i]); break;
             case "--repros": repros = int.Parse(args[++i]); break;
             case "--fuzz-replay": replay = args[++i]; break;
@@ -48,6 +50,7 @@ try
                 Console.WriteLine("         [--fuzz-new M] [--start-new J]   and M cases (default N) of issue 12's pairs, indices 1000000000000 + J …");
                 Console.WriteLine("         [--fuzz-gaps G] [--start-gaps K]   and G cases (default N/4) of exact tiny gaps, every pair in double, indices 2000000000000 + K …");
                 Console.WriteLine("         [--fuzz-near H] [--start-near L]   and H cases (default N/4) of nearly touching cores, every pair in both precisions, indices 3000000000000 + L …");
+                Console.WriteLine("         [--fuzz-shallow X] [--start-shallow Y]   and X cases (default N/4) of edges crossing at shallow angles, both precisions, indices 4000000000000 + Y …");
                 Console.WriteLine("         [--errors FILE]   also write the measured E per pair (against the exact reference) as a Markdown page");
                 Console.WriteLine("accuracy --fuzz-replay SEED:INDEX                                                 one fuzz case, every check, repros");
                 Console.WriteLine("accuracy --fuzz-casts N [--casts-start I] [--seed S] [--threads T] [--repros R] [--out FILE] [--errors FILE]");
@@ -69,9 +72,10 @@ catch (Exception e) when (e is FormatException || e is OverflowException || e is
 if (fuzzNew < 0) fuzzNew = fuzz;
 if (fuzzGaps < 0) fuzzGaps = fuzz / 4;
 if (fuzzNear < 0) fuzzNear = fuzz / 4;
-if (fuzz < 0 || start < 0 || startNew < 0 || startGaps < 0 || startNear < 0 || casts < 0 || castsStart < 0 || threads < 1 || repros < 0)
+if (fuzzShallow < 0) fuzzShallow = fuzz / 4;
+if (fuzz < 0 || start < 0 || startNew < 0 || startGaps < 0 || startNear < 0 || fuzzShallow < 0 || startShallow < 0 || casts < 0 || castsStart < 0 || threads < 1 || repros < 0)
 {
-    Console.Error.WriteLine("--fuzz, --fuzz-new, --fuzz-gaps, --fuzz-near, --fuzz-casts, --start, --start-new, --start-gaps, --start-near, --casts-start and --repros must not be negative and --threads must be at least 1 (try --help)");
+    Console.Error.WriteLine("--fuzz, --fuzz-new, --fuzz-gaps, --fuzz-near, --fuzz-shallow, --fuzz-casts, --start, --start-new, --start-gaps, --start-near, --start-shallow, --casts-start and --repros must not be negative and --threads must be at least 1 (try --help)");
     return 2;
 }
 
@@ -101,18 +105,18 @@ if (replay != null)
     return 0;
 }
 
-if (fuzz > 0 || fuzzNew > 0 || fuzzGaps > 0 || fuzzNear > 0 || casts > 0)
+if (fuzz > 0 || fuzzNew > 0 || fuzzGaps > 0 || fuzzNear > 0 || fuzzShallow > 0 || casts > 0)
 {
     FuzzReport? report = null;
     CastReport? castReport = null;
     try
     {
-        if (fuzz > 0 || fuzzNew > 0 || fuzzGaps > 0 || fuzzNear > 0)
+        if (fuzz > 0 || fuzzNew > 0 || fuzzGaps > 0 || fuzzNear > 0 || fuzzShallow > 0)
         {
-            Console.Error.WriteLine($"fuzz: {fuzz} cases from {start}, {fuzzNew} of issue 12's pairs from {FuzzCase.NewBase + startNew} {fuzzGaps} tiny gaps from {FuzzCase.GapBase + startGaps} and {fuzzNear} near cores from {FuzzCase.NearBase + startNear}, seed {seed}, {threads} threads");
+            Console.Error.WriteLine($"fuzz: {fuzz} cases from {start}, {fuzzNew} of issue 12's pairs from {FuzzCase.NewBase + startNew} {fuzzGaps} tiny gaps from {FuzzCase.GapBase + startGaps} {fuzzNear} near cores from {FuzzCase.NearBase + startNear} and {fuzzShallow} shallow crossings from {FuzzCase.ShallowBase + startShallow}, seed {seed}, {threads} threads");
             report = Engine.Run(new FuzzOptions
             {
-                Seed = seed, Start = start, Count = fuzz, NewStart = startNew, NewCount = fuzzNew, GapStart = startGaps, GapCount = fuzzGaps, NearStart = startNear, NearCount = fuzzNear, Threads = threads,
+                Seed = seed, Start = start, Count = fuzz, NewStart = startNew, NewCount = fuzzNew, GapStart = startGaps, GapCount = fuzzGaps, NearStart = startNear, NearCount = fuzzNear, ShallowStart = startShallow, ShallowCount = fuzzShallow, Threads = threads,
                 Progress = line => Console.Error.WriteLine("  " + line),
             });
         }
@@ -136,7 +140,7 @@ if (fuzz > 0 || fuzzNew > 0 || fuzzGaps > 0 || fuzzNear > 0 || casts > 0)
     if (errors != null)
     {
         var command = new StringBuilder("dotnet run --project tests/ProximityLib.Accuracy -c Release --");
-        if (report != null) command.Append($" --fuzz {fuzz} --fuzz-new {fuzzNew} --fuzz-gaps {fuzzGaps} --fuzz-near {fuzzNear}");
+        if (report != null) command.Append($" --fuzz {fuzz} --fuzz-new {fuzzNew} --fuzz-gaps {fuzzGaps} --fuzz-near {fuzzNear} --fuzz-shallow {fuzzShallow}");
         if (castReport != null) command.Append($" --fuzz-casts {casts}{(castsStart > 0 ? $" --casts-start {castsStart}" : "")}");
         command.Append($" --seed {seed} --errors {errors}");
         var page = new StringBuilder();

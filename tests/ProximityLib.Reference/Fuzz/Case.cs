@@ -91,37 +91,42 @@ namespace ProximityReference.Fuzz
         /// </summary>
         public const long NearBase = 3_000_000_000_000;
 
+        /// <summary>
+        /// The first index of the fifth index space: edges crossing at shallow angles (<see cref="Generators.ShallowCross"/>)
+        /// for the pairs of <see cref="ShallowPairs"/> in both precisions, a space of its own so no case of the other four
+        /// changed (replay ShallowBase + k as SEED:4000000000000+k).
+        /// </summary>
+        public const long ShallowBase = 4_000_000_000_000;
+
+        /// <summary>The pairs of <see cref="GapPairs"/> whose kinds both have edges, not two boxes (<see cref="Generators.Crosses"/>).</summary>
+        public static readonly (int Dim, Kind A, Kind B)[] ShallowPairs = GapPairs.Where(x => Generators.Crosses(x.A, x.B)).ToArray();
+
         /// <summary>The pair and precision of an index: in the original space index mod 60 picks one of 30 pairs × 2
         /// precisions; in the new space (index − NewBase) mod 160 one of 80 pairs × 2; in the gap space (index − GapBase)
-        /// mod 110 one of the 110 pairs, double; in the near space (index − NearBase) mod 220 one of the 110 pairs × 2.
-        /// Consecutive blocks rotate the generators.</summary>
+        /// mod 110 one of the 110 pairs, double; in the near space (index − NearBase) mod 220 one of the 110 pairs × 2; in
+        /// the shallow space (index − ShallowBase) mod 100 one of its 50 pairs × 2. Consecutive blocks rotate the
+        /// generators.</summary>
         public static (int Dim, Kind A, Kind B, bool Float, long Round) Slot(long index)
         {
-            if (index >= NearBase)
-            {
-                long h = index - NearBase;
-                int n2 = GapPairs.Length;
-                int slot = (int)(h % (2 * n2));
-                var (dh, ah, bh) = GapPairs[slot % n2];
-                return (dh, ah, bh, slot >= n2, h / (2 * n2));
-            }
+            if (index >= ShallowBase) return BothPrecisions(ShallowPairs, index - ShallowBase);
+            if (index >= NearBase) return BothPrecisions(GapPairs, index - NearBase);
             if (index >= GapBase)
             {
                 long g = index - GapBase;
                 var (dg, ag, bg) = GapPairs[(int)(g % GapPairs.Length)];
                 return (dg, ag, bg, false, g / GapPairs.Length);
             }
-            if (index < NewBase)
-            {
-                int slot = (int)(index % 60);
-                var (dim, ka, kb) = Pairs[slot % 30];
-                return (dim, ka, kb, slot >= 30, index / 60);
-            }
-            long k = index - NewBase;
-            int n = NewPairs.Length;
-            int s2 = (int)(k % (2 * n));
-            var (d2, a2, b2) = NewPairs[s2 % n];
-            return (d2, a2, b2, s2 >= n, k / (2 * n));
+            if (index < NewBase) return BothPrecisions(Pairs, index);
+            return BothPrecisions(NewPairs, index - NewBase);
+        }
+
+        /// <summary>Case k of a space over <paramref name="pairs"/> in both precisions: k mod 2n picks the pair (mod n), double then float.</summary>
+        private static (int Dim, Kind A, Kind B, bool Float, long Round) BothPrecisions((int Dim, Kind A, Kind B)[] pairs, long k)
+        {
+            int n = pairs.Length;
+            int slot = (int)(k % (2 * n));
+            var (dim, a, b) = pairs[slot % n];
+            return (dim, a, b, slot >= n, k / (2 * n));
         }
 
         /// <summary>
@@ -137,6 +142,11 @@ namespace ProximityReference.Fuzz
             if (!Available(dim, ka, kb, isFloat))
                 throw new ArgumentException($"case {seed}:{index} is {dim}D {ka}–{kb} ({(isFloat ? "float" : "double")}), which the library has no public overloads for yet");
             var rng = Rng.ForCase(seed, index);
+            if (index >= ShallowBase)
+            {
+                var (xa, xb) = Generators.ShallowCross(rng, ka, kb, dim, isFloat ? Precision.Single : Precision.Double);
+                return new FuzzCase(seed, index, "shallow-cross", dim, isFloat, xa, xb, rng);
+            }
             if (index >= NearBase)
             {
                 var (na, nb) = Generators.NearCore(rng, ka, kb, dim, isFloat ? Precision.Single : Precision.Double);

@@ -22,6 +22,9 @@ namespace ProximityReference.Fuzz
         /// <summary>Cases of the fourth index space (nearly touching cores, every pair in both precisions): FuzzCase.NearBase + NearStart, … (0: none).</summary>
         public long NearStart { get; set; }
         public long NearCount { get; set; }
+        /// <summary>Cases of the fifth index space (edges crossing at shallow angles, both precisions): FuzzCase.ShallowBase + ShallowStart, … (0: none).</summary>
+        public long ShallowStart { get; set; }
+        public long ShallowCount { get; set; }
         public int Threads { get; set; } = Environment.ProcessorCount;
         /// <summary>Called every few seconds with a progress line.</summary>
         public Action<string>? Progress { get; set; }
@@ -181,8 +184,9 @@ namespace ProximityReference.Fuzz
         public static FuzzReport Run(FuzzOptions o)
         {
             var total = new FuzzReport { Seed = o.Seed, Start = o.Start };
-            // The index spaces run, each as (first index, count): the original, the new pairs', the tiny gaps', the near cores'.
-            var spaces = new[] { (o.Start, o.Count), (FuzzCase.NewBase + o.NewStart, o.NewCount), (FuzzCase.GapBase + o.GapStart, o.GapCount), (FuzzCase.NearBase + o.NearStart, o.NearCount) };
+            // The index spaces run, each as (first index, count): the original, the new pairs', the tiny gaps', the near cores',
+            // the shallow crossings'.
+            var spaces = new[] { (o.Start, o.Count), (FuzzCase.NewBase + o.NewStart, o.NewCount), (FuzzCase.GapBase + o.GapStart, o.GapCount), (FuzzCase.NearBase + o.NearStart, o.NearCount), (FuzzCase.ShallowBase + o.ShallowStart, o.ShallowCount) };
             total.Ranges = string.Join(" and ", spaces.Where(x => x.Item2 > 0).Select(x => $"{x.Item1}..{x.Item1 + x.Item2 - 1}"));
             var clock = Stopwatch.StartNew();
             const int chunk = 60;

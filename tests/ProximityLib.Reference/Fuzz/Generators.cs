@@ -1147,6 +1147,100 @@ namespace ProximityReference.Fuzz
             return Finish(hostIsA ? host : guest, hostIsA ? guest : host, p);
         }
 
+        /// <summary>Kinds with an edge or axis that <see cref="ShallowCross"/> can cross: linear kinds, capsules, triangles, boxes.</summary>
+        public static bool HasEdge(Kind k) => Axial(k) || k == Kind.Triangle || k == Kind.Aabb || k == Kind.Obb;
+
+        /// <summary>The pairs of the shallow index space: both kinds with edges, not two boxes (a box is only ever the host).</summary>
+        public static bool Crosses(Kind a, Kind b) => HasEdge(a) && HasEdge(b) && !(IsBox(a) && IsBox(b));
+
+        private static bool IsBox(Kind k) => k == Kind.Aabb || k == Kind.Obb;
+
+        /// <summary>
+        /// Edges crossing at a shallow angle (the shallow index space, <see cref="FuzzCase.ShallowBase"/>): an edge of the
+        /// host (a segment, a stretch of a line or ray, a capsule's axis, a triangle's edge, a box's edge) and the guest's
+        /// segment, line, ray, capsule axis or triangle edge through a point inside it at 10^-0.5…10^-3 rad (3D: apart
+        /// along their common normal by 0 or ±10^0…10^-16 of the size, half the time plus the capsules' radii). Between
+        /// the nearly parallel generator's 10^-3…10^-15 and random angles: the lines' stationary parameters carry u/sin²θ
+        /// and a normal from a plain cross product u/sin θ of turn, so a gap taken along it was off by u·|w|/sin θ (a 3D
+        /// segment–line case at sin θ = 0.015 had E = 40).
+        /// </summary>
+        public static (Spec, Spec) ShallowCross(Rng r, Kind ka, Kind kb, int dim, Precision p)
+        {
+            double s = r.Pow2(-10, 10);
+            bool hostIsA = IsBox(ka) || (!IsBox(kb) && r.Chance(0.5));
+            var (host, e0, e1) = HostEdge(r, hostIsA ? ka : kb, dim, s, p);
+            var kind = hostIsA ? kb : ka;
+            var d = (e1 - e0) / (e1 - e0).Length;
+            var x = e0 + (e1 - e0) * r.Range(0.05, 0.95);
+            var d2 = Turn(d, Perp(r, d, dim), r.Pow10Neg(0.5, 3)) * r.Sign();
+            double radius = kind == Kind.Capsule ? s * r.Range(0.05, 0.5) : 0;
+            var at = x;
+            if (dim == 3)
+            {
+                var n = Vector3D.Cross(d, d2);
+                n /= n.Length;
+                double gap = r.Chance(0.3) ? 0 : s * r.Pow10Neg(0, 16) * r.Sign();
+                double radii = host.Kind == Kind.Capsule ? host.R + radius : radius;
+                if (radii > 0 && r.Chance(0.5)) gap += radii * (gap < 0 ? -1 : 1);
+                at += n * gap;
+            }
+            double length = s * r.Range(0.5, 2), u = r.Range(0.05, 0.95);
+            var g0 = at - d2 * (u * length);
+            var g1 = at + d2 * ((1 - u) * length);
+            Spec guest = kind switch
+            {
+                Kind.Segment => r.Chance(0.5) ? Spec.Segment(dim, g0, g1) : Spec.Segment(dim, g1, g0),
+                Kind.Line => Spec.Line(dim, g0, d2 * r.Pow2(-2, 2)),
+                Kind.Ray => r.Chance(0.5) ? Spec.Ray(dim, g0, d2) : Spec.Ray(dim, g1, -d2),
+                Kind.Capsule => Spec.Capsule(dim, g0, g1, radius),
+                _ => r.Int(3) switch // a triangle with this edge
+                {
+                    0 => Spec.Triangle(dim, g0, g1, at + Dir(r, dim) * (s * r.Range(0.3, 1))),
+                    1 => Spec.Triangle(dim, at + Dir(r, dim) * (s * r.Range(0.3, 1)), g0, g1),
+                    _ => Spec.Triangle(dim, g1, at + Dir(r, dim) * (s * r.Range(0.3, 1)), g0),
+                },
+            };
+            return Finish(hostIsA ? host : guest, hostIsA ? guest : host, p);
+        }
+
+        /// <summary>A random host of a kind with edges near the origin at size s, and one of its edges (or a stretch of its line).</summary>
+        private static (Spec Host, Vector3D E0, Vector3D E1) HostEdge(Rng r, Kind kind, int dim, double s, Precision p)
+        {
+            var c = U3(r, 1, dim) * s;
+            Vector3D Span() => Dir(r, dim) * (s * r.Range(0.5, 2));
+            switch (kind)
+            {
+                case Kind.Segment: { var w = Span(); return (Spec.Segment(dim, c, c + w), c, c + w); }
+                case Kind.Capsule: { var w = Span(); return (Spec.Capsule(dim, c, c + w, s * r.Range(0.05, 0.5)), c, c + w); }
+                case Kind.Line: { var d = Dir(r, dim); return (Spec.Line(dim, c, d * r.Pow2(-2, 2)), c - d * s, c + d * s); }
+                case Kind.Ray: { var d = Dir(r, dim); return (Spec.Ray(dim, c, d * r.Pow2(-2, 2)), c, c + d * (2 * s)); }
+                case Kind.Triangle:
+                {
+                    Vector3D a = c, b = c + Span(), t = c + Span();
+                    return r.Int(3) switch
+                    {
+                        0 => (Spec.Triangle(dim, a, b, t), a, b),
+                        1 => (Spec.Triangle(dim, a, b, t), b, t),
+                        _ => (Spec.Triangle(dim, a, b, t), t, a),
+                    };
+                }
+                default:
+                {
+                    var (box, _) = RandomBox(r, kind, dim, s, p);
+                    var core = Core.Of(box.Build());
+                    var axes = kind == Kind.Aabb ? new[] { Vector3D.UnitX, Vector3D.UnitY, Vector3D.UnitZ } : core.Axes;
+                    var center = kind == Kind.Aabb ? (core.P + core.Q) * 0.5 : core.P;
+                    var h = kind == Kind.Aabb
+                        ? new[] { (core.Q.X - core.P.X) / 2, (core.Q.Y - core.P.Y) / 2, (core.Q.Z - core.P.Z) / 2 }
+                        : new[] { core.H.X, core.H.Y, core.H.Z };
+                    int i = r.Int(dim);
+                    var mid = center;
+                    for (int j = 0; j < dim; j++) if (j != i) mid += axes[j] * (r.Sign() * h[j]);
+                    return (box, mid - axes[i] * h[i], mid + axes[i] * h[i]);
+                }
+            }
+        }
+
         /// <summary>
         /// Grazing contacts with a general rotation: lines and rays tangent to spheres and capsules (sides and caps),
         /// through box edges and vertices, planes through box edges and vertices, shapes at triangle vertices and on

@@ -10,9 +10,11 @@ namespace ProximityTests.Fuzz
     /// batch queries, against the invariants and, on a sample, the exact reference; and issue 12's pairs (lines, rays,
     /// capsules, triangles, half-spaces) in their own index space, each pair from the commit whose overloads add it; and
     /// exact tiny gaps for all 110 pairs in double (a third space), scaled to where their squares underflow; and nearly
-    /// touching cores for all 110 pairs in both precisions (a fourth space), where push-outs must follow exact normals.
+    /// touching cores for all 110 pairs in both precisions (a fourth space), where push-outs must follow exact normals;
+    /// and edges crossing at shallow angles for the 50 pairs of kinds with edges (a fifth space).
     /// About a minute in Release on two cores. PROXIMITY_FUZZ_SEED, PROXIMITY_FUZZ_CASES, PROXIMITY_FUZZ_NEW_CASES,
-    /// PROXIMITY_FUZZ_GAP_CASES and PROXIMITY_FUZZ_NEAR_CASES override the seed and the numbers of cases; the long mode is
+    /// PROXIMITY_FUZZ_GAP_CASES, PROXIMITY_FUZZ_NEAR_CASES and PROXIMITY_FUZZ_SHALLOW_CASES override the seed and the
+    /// numbers of cases; the long mode is
     /// <c>dotnet run --project tests/ProximityLib.Accuracy -c Release -- --fuzz 2000000 --seed N</c>.
     /// </summary>
     [TestFixture, Category("Fuzz")]
@@ -27,6 +29,8 @@ namespace ProximityTests.Fuzz
         public const long DefaultGapCases = 22_000;
         /// <summary>A multiple of 220: every block of 220 consecutive near-space cases covers all 110 pairs in both precisions.</summary>
         public const long DefaultNearCases = 22_000;
+        /// <summary>A multiple of 100: every block of 100 consecutive shallow-space cases covers its 50 pairs in both precisions.</summary>
+        public const long DefaultShallowCases = 10_000;
 
         private static long Setting(string name, long fallback)
         {
@@ -44,7 +48,8 @@ namespace ProximityTests.Fuzz
             long newCases = Setting("PROXIMITY_FUZZ_NEW_CASES", DefaultNewCases);
             long gapCases = Setting("PROXIMITY_FUZZ_GAP_CASES", DefaultGapCases);
             long nearCases = Setting("PROXIMITY_FUZZ_NEAR_CASES", DefaultNearCases);
-            var report = Engine.Run(new FuzzOptions { Seed = seed, Count = cases, NewCount = newCases, GapCount = gapCases, NearCount = nearCases, Threads = Environment.ProcessorCount });
+            long shallowCases = Setting("PROXIMITY_FUZZ_SHALLOW_CASES", DefaultShallowCases);
+            var report = Engine.Run(new FuzzOptions { Seed = seed, Count = cases, NewCount = newCases, GapCount = gapCases, NearCount = nearCases, ShallowCount = shallowCases, Threads = Environment.ProcessorCount });
             string text = report.Format(repros: 20, rows: 120);
             TestContext.Progress.WriteLine($"Fuzz: {report.Cases} cases (seed {seed}; {report.Skipped} skipped: pairs not in the library yet) in " +
                                            $"{report.Elapsed.TotalSeconds:F1} s, {report.FailureCount} violations in {report.FailedCases} cases");
@@ -74,7 +79,10 @@ namespace ProximityTests.Fuzz
         /// whose witness was off its shape: 7:3000000037270 (2D ray–capsule along the axis, a sliver of a Minkowski
         /// difference whose face picked by rounding had its foot 0.99 beyond the ray's origin). And one that broke 2^k
         /// scaling: 122:1000000004031 (3D capsule–AABB, a zero-length capsule centred on the box's max corner: the
-        /// normal toward the min corner was scaled by 2^1022 and overflowed at unit size, not at 2^-10 of it).
+        /// normal toward the min corner was scaled by 2^1022 and overflowed at unit size, not at 2^-10 of it). And edges
+        /// crossing at a shallow angle, whose gap was taken along the plain cross product of the directions (turned by
+        /// u/sin θ): 127:3000000005535 (3D segment–line at sin θ = 0.015, E = 40.6), and from the shallow space when it was
+        /// added, 1:4000000005217 (3D ray–capsule, E = 56.8) and 1:4000000014209 (3D segment–triangle, an edge).
         /// </summary>
         [TestCase(11, 280751)]
         [TestCase(11, 1579269)]
@@ -108,6 +116,9 @@ namespace ProximityTests.Fuzz
         [TestCase(3, 3000000049966)]
         [TestCase(7, 3000000037270)]
         [TestCase(122, 1000000004031)]
+        [TestCase(127, 3000000005535)]
+        [TestCase(1, 4000000005217)]
+        [TestCase(1, 4000000014209)]
         public void CasesTheLongModeFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = Checker.Run(FuzzCase.Create(seed, index), exact: true);

@@ -1,3 +1,4 @@
+using System;
 using NUnit.Framework;
 using ProximityLib.Double;
 using ProximityReference.Fuzz;
@@ -147,6 +148,50 @@ namespace ProximityTests.Fuzz
             var c = FuzzCase.Create(7, FuzzCase.GapBase + 5);
             Assert.That(c.Generator, Is.EqualTo("tiny-gap"));
             Assert.That(c.Float, Is.False);
+        }
+
+        [Test]
+        public void TheShallowSpaceCoversEveryPairWithEdgesInBothPrecisions()
+        {
+            Assert.That(FuzzCase.ShallowBase, Is.GreaterThan(FuzzCase.NearBase + 1_000_000_000));
+            Assert.That(FuzzCase.ShallowPairs.Length * 2, Is.EqualTo(100));
+            Assert.That(DifferentialFuzzTests.DefaultShallowCases % 100, Is.EqualTo(0));
+            var seen = new System.Collections.Generic.HashSet<(int, Kind, Kind, bool)>();
+            for (long i = 0; i < 100; i++)
+            {
+                var (dim, a, b, isFloat, round) = FuzzCase.Slot(FuzzCase.ShallowBase + i);
+                Assert.That(round, Is.EqualTo(0));
+                Assert.That(Generators.Crosses(a, b), Is.True);
+                seen.Add((dim, a, b, isFloat));
+            }
+            Assert.That(seen.Count, Is.EqualTo(100));
+            Assert.That(seen, Does.Contain((3, Kind.Segment, Kind.Line, false)));
+            Assert.That(seen, Does.Not.Contain((3, Kind.Aabb, Kind.Obb, false)));
+        }
+
+        [Test]
+        public void ShallowSegmentPairsCrossInsideBothAtShallowAngles()
+        {
+            // 3D segment–segment in double: the guest's segment passes through a point inside the host's at
+            // 10^-0.5…10^-3 rad, so the lines' closest parameters lie inside both and sin θ is in that range.
+            int found = 0;
+            for (long i = 0; found < 20 && i < 100_000; i++)
+            {
+                long index = FuzzCase.ShallowBase + i;
+                var (dim, a, b, isFloat, _) = FuzzCase.Slot(index);
+                if (dim != 3 || a != Kind.Segment || b != Kind.Segment || isFloat) continue;
+                var c = FuzzCase.Create(3, index);
+                Assert.That(c.Generator, Is.EqualTo("shallow-cross"));
+                Vector3D d0 = c.A.Q - c.A.P, d1 = c.B.Q - c.B.P, w = c.B.P - c.A.P;
+                var n = Vector3D.Cross(d0, d1);
+                double sin = n.Length / (d0.Length * d1.Length);
+                Assert.That(sin, Is.InRange(Math.Sin(0.0009), Math.Sin(0.33)), $"case {index}");
+                double s = Vector3D.Dot(Vector3D.Cross(w, d1), n) / n.LengthSquared, t = Vector3D.Dot(Vector3D.Cross(w, d0), n) / n.LengthSquared;
+                Assert.That(s, Is.InRange(0.0, 1.0), $"case {index}");
+                Assert.That(t, Is.InRange(0.0, 1.0), $"case {index}");
+                found++;
+            }
+            Assert.That(found, Is.EqualTo(20));
         }
 
         [Test]
