@@ -161,7 +161,7 @@ namespace ProximityApiGen
     internal static class Generator
     {
         private static readonly Regex Declaration = new Regex(
-            @"^\s*internal static (?<result>\w+) (?<name>Core|DistanceCore)\((?<a>\w+) a, (?<b>\w+) b(?<guard>, out bool inRange)?\)");
+            @"^\s*internal static (?<result>\w+) (?<name>Core|DistanceCore)\((?:in )?(?<a>\w+) a, (?:in )?(?<b>\w+) b(?<guard>, out bool inRange)?\)");
         private static readonly Regex Class = new Regex(@"^\s*public static partial class (?<name>\w+)");
 
         /// <summary>The contract of each public Between a pair file yields: (dimension, A, B as double type names, its summary).</summary>

@@ -22,9 +22,9 @@ namespace ProximityLib.Double
         public readonly Vector2D HalfExtents;
 
         /// <summary>The first box axis (unit).</summary>
-        public Vector2D AxisX => _hasAxis ? new Vector2D(_cos, _sin) : Vector2D.UnitX;
+        public Vector2D AxisX { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => _hasAxis ? new Vector2D(_cos, _sin) : Vector2D.UnitX; }
         /// <summary>The second box axis: AxisX turned +90°.</summary>
-        public Vector2D AxisY => _hasAxis ? new Vector2D(-_sin, _cos) : Vector2D.UnitY;
+        public Vector2D AxisY { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => _hasAxis ? new Vector2D(-_sin, _cos) : Vector2D.UnitY; }
 
         /// <summary>Creates a box from its first axis, of any finite, non-zero length (normalised here); throws <see cref="ArgumentException"/> on non-finite input, a zero axis or negative half-extents.</summary>
         public Obb2(Vector2D center, Vector2D axisX, Vector2D halfExtents)

@@ -33,11 +33,11 @@ namespace ProximityLib.Double
 #endif
 
         /// <summary>The first box axis (unit).</summary>
-        public Vector3D AxisX => _hasAxes ? _x : Vector3D.UnitX;
+        public Vector3D AxisX { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => _hasAxes ? _x : Vector3D.UnitX; }
         /// <summary>The second box axis (unit).</summary>
-        public Vector3D AxisY => _hasAxes ? _y : Vector3D.UnitY;
+        public Vector3D AxisY { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => _hasAxes ? _y : Vector3D.UnitY; }
         /// <summary>The third box axis (unit).</summary>
-        public Vector3D AxisZ => _hasAxes ? _z : Vector3D.UnitZ;
+        public Vector3D AxisZ { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => _hasAxes ? _z : Vector3D.UnitZ; }
 
         /// <summary>
         /// Creates a box from three axes of any finite, non-zero length: each is normalised first, and the unit directions

@@ -381,7 +381,20 @@ namespace ProximityLib.Double
                 return (r & 1) != 0;
             }
 #endif
-            return BoxBoxOverlaps(a.ToBox(), b.ToBox(), out inRange);
+            return ObbObbOverlapsScalar(a, b, out inRange);
+        }
+
+        /// <summary>
+        /// <see cref="ObbObbOverlaps"/> without AVX2 (Mono, Unity): the scalar test on the OBBs' fields, without their
+        /// <see cref="Box"/> forms, whose building and passing (two 152-byte structs) cost Mono more than the test.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static bool ObbObbOverlapsScalar(in Obb3 a, in Obb3 b, out bool inRange)
+        {
+            var tw = b.Center - a.Center;
+            Vector3D ha = a.HalfExtents, hb = b.HalfExtents;
+            inRange = Range.Box(Range.MaxAbs(tw, ha + ha, hb + hb)); // Size of the Box forms: h − (−h) is h + h
+            return OverlapsCenteredScalar(tw, a.AxisX, a.AxisY, a.AxisZ, ha, b.AxisX, b.AxisY, b.AxisZ, hb, false);
         }
 
         /// <summary><see cref="BoxBoxOverlaps(in Box, in Box, out bool)"/> for an AABB and an OBB, on AVX2 without building their <see cref="Box"/> forms.</summary>
@@ -396,7 +409,21 @@ namespace ProximityLib.Double
                 return (r & 1) != 0;
             }
 #endif
-            return BoxBoxOverlaps(a.ToBox(), b.ToBox(), out inRange);
+            return AabbObbOverlapsScalar(a, b, out inRange);
+        }
+
+        /// <summary>
+        /// <see cref="AabbObbOverlaps"/> without AVX2: <see cref="ObbObbOverlapsScalar"/>'s way, on the values of the AABB's
+        /// Box form (origin Min, [0, Max − Min]; its unit axes map offsets exactly).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static bool AabbObbOverlapsScalar(in Aabb3 a, in Obb3 b, out bool inRange)
+        {
+            var ha = (a.Max - a.Min) * 0.5;
+            var hb = b.HalfExtents;
+            var ob = b.Center - a.Min;
+            inRange = Range.Box(Range.MaxAbs(ob, a.Max - a.Min, hb + hb));
+            return OverlapsCenteredScalar(ob - ha, Vector3D.UnitX, Vector3D.UnitY, Vector3D.UnitZ, ha, b.AxisX, b.AxisY, b.AxisZ, hb, false);
         }
 
         /// <summary>
@@ -414,21 +441,29 @@ namespace ProximityLib.Double
         }
 
         /// <summary>The scalar form of <see cref="BoxBoxOverlaps(in Box, in Box)"/>: the only one on netstandard2.1 (Unity) and for planar boxes.</summary>
-        [MethodImpl(MethodImplOptions.NoInlining)]
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool BoxBoxOverlapsScalar(in Box a, in Box b)
         {
             var tw = (b.Origin - a.Origin) + b.ToWorldOffset(b.LocalCenter) - a.ToWorldOffset(a.LocalCenter);
-            double tx = Vector3D.Dot(tw, a.X), ty = Vector3D.Dot(tw, a.Y), tz = Vector3D.Dot(tw, a.Z);
+            return OverlapsCenteredScalar(tw, a.X, a.Y, a.Z, a.Half, b.X, b.Y, b.Z, b.Half, a.Planar || b.Planar);
+        }
+
+        /// <summary>
+        /// <see cref="BoxBoxOverlapsScalar"/> on boxes centred on their origins, tw = B's centre − A's centre in world
+        /// axes: two OBBs need nothing more (as OverlapsCentered on AVX2 lanes, BoxKernels.Vector.cs).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static bool OverlapsCenteredScalar(Vector3D tw, Vector3D ax, Vector3D ay, Vector3D az, Vector3D ha,
+            Vector3D bx, Vector3D by, Vector3D bz, Vector3D hb, bool planar)
+        {
+            double tx = Vector3D.Dot(tw, ax), ty = Vector3D.Dot(tw, ay), tz = Vector3D.Dot(tw, az);
             // r_ij = a_i · b_j: B's axes as columns in A's frame.
-            double r00 = Vector3D.Dot(a.X, b.X), r01 = Vector3D.Dot(a.X, b.Y), r02 = Vector3D.Dot(a.X, b.Z);
-            double r10 = Vector3D.Dot(a.Y, b.X), r11 = Vector3D.Dot(a.Y, b.Y), r12 = Vector3D.Dot(a.Y, b.Z);
-            double r20 = Vector3D.Dot(a.Z, b.X), r21 = Vector3D.Dot(a.Z, b.Y), r22 = Vector3D.Dot(a.Z, b.Z);
-            var ha = a.Half;
-            var hb = b.Half;
+            double r00 = Vector3D.Dot(ax, bx), r01 = Vector3D.Dot(ax, by), r02 = Vector3D.Dot(ax, bz);
+            double r10 = Vector3D.Dot(ay, bx), r11 = Vector3D.Dot(ay, by), r12 = Vector3D.Dot(ay, bz);
+            double r20 = Vector3D.Dot(az, bx), r21 = Vector3D.Dot(az, by), r22 = Vector3D.Dot(az, bz);
             double q00 = Math.Abs(r00), q01 = Math.Abs(r01), q02 = Math.Abs(r02);
             double q10 = Math.Abs(r10), q11 = Math.Abs(r11), q12 = Math.Abs(r12);
             double q20 = Math.Abs(r20), q21 = Math.Abs(r21), q22 = Math.Abs(r22);
-            bool planar = a.Planar || b.Planar;
 
             // A's and B's face axes.
             if (Math.Abs(tx) > ha.X + hb.X * q00 + hb.Y * q01 + hb.Z * q02) return false;

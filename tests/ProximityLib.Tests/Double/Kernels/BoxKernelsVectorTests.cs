@@ -78,6 +78,53 @@ namespace ProximityTests.Double.Kernels
         }
 
         /// <summary>
+        /// The scalar overlap entries (Mono, Unity, no AVX2), which read the shapes' fields instead of building their
+        /// <see cref="Box"/> forms, give the scalar test's verdict on the Box forms and their range flag, at unit scale,
+        /// outside the fast range, and for default(Obb3) (no stored axes). Runs on every machine.
+        /// </summary>
+        [TestCase(1.0)]
+        [TestCase(1e-140)]
+        [TestCase(1e140)]
+        public void ScalarOverlapEntriesFromTheShapesMatchTheBoxForms(double scale)
+        {
+            var r = new Random(31);
+            int overlapping = 0;
+            for (int i = 0; i < 3000; i++)
+            {
+                var a = i % 50 == 0 ? default : RandomBox(r, 3, scale);
+                var b = i % 3 == 0
+                    ? new Obb3(a.Center + new Vector3D(0, 0, a.HalfExtents.Z * (2 + (r.NextDouble() - 0.5) * 1e-3)), a.AxisX, a.AxisY, a.AxisZ, a.HalfExtents + new Vector3D(scale, scale, scale))
+                    : RandomBox(r, 3, scale);
+                var min = new Vector3D(r.NextDouble(), r.NextDouble(), r.NextDouble()) * (2 * scale);
+                var c = new Aabb3(min, min + new Vector3D(0.1 + r.NextDouble(), 0.1 + r.NextDouble(), 0.1 + r.NextDouble()) * scale);
+                bool obbIn = ProximityLib.Double.Kernels.ObbObbOverlapsScalar(a, b, out bool obbRange);
+                Assert.That(obbIn, Is.EqualTo(ProximityLib.Double.Kernels.BoxBoxOverlapsScalar(a.ToBox(), b.ToBox())), $"case {i}: OBB–OBB");
+                ProximityLib.Double.Kernels.BoxBoxOverlaps(a.ToBox(), b.ToBox(), out bool boxRange);
+                Assert.That(obbRange, Is.EqualTo(boxRange), $"case {i}: OBB–OBB range");
+                bool aabbIn = ProximityLib.Double.Kernels.AabbObbOverlapsScalar(c, b, out bool aabbRange);
+                Assert.That(aabbIn, Is.EqualTo(ProximityLib.Double.Kernels.BoxBoxOverlapsScalar(c.ToBox(), b.ToBox())), $"case {i}: AABB–OBB");
+                ProximityLib.Double.Kernels.BoxBoxOverlaps(c.ToBox(), b.ToBox(), out boxRange);
+                Assert.That(aabbRange, Is.EqualTo(boxRange), $"case {i}: AABB–OBB range");
+                if (obbIn) overlapping++;
+
+                // The planar entries against the planar test on the Box2 forms.
+                Obb2 Rect() => new Obb2(new Vector2D(r.NextDouble() * 3, r.NextDouble() * 3) * scale, new Vector2D(r.NextDouble() - 0.5, r.NextDouble() - 0.5),
+                    new Vector2D(0.2 + r.NextDouble(), 0.2 + r.NextDouble()) * scale);
+                var a2 = i % 50 == 0 ? default : Rect();
+                var b2 = Rect();
+                var min2 = new Vector2D(r.NextDouble(), r.NextDouble()) * (2 * scale);
+                var c2 = new Aabb2(min2, min2 + new Vector2D(0.1 + r.NextDouble(), 0.1 + r.NextDouble()) * scale);
+                bool obb2 = ProximityLib.Double.Kernels.ObbObbOverlaps2(a2, b2, out bool obb2Range);
+                Assert.That(obb2, Is.EqualTo(ProximityLib.Double.Kernels.BoxBoxOverlaps2(a2.ToBox2(), b2.ToBox2(), out bool box2Range)), $"case {i}: 2D OBB–OBB");
+                Assert.That(obb2Range, Is.EqualTo(box2Range), $"case {i}: 2D OBB–OBB range");
+                bool aabb2 = ProximityLib.Double.Kernels.AabbObbOverlaps2(c2, b2, out bool aabb2Range);
+                Assert.That(aabb2, Is.EqualTo(ProximityLib.Double.Kernels.BoxBoxOverlaps2(c2.ToBox2(), b2.ToBox2(), out box2Range)), $"case {i}: 2D AABB–OBB");
+                Assert.That(aabb2Range, Is.EqualTo(box2Range), $"case {i}: 2D AABB–OBB range");
+            }
+            Assert.That(overlapping, Is.InRange(300, 2700));
+        }
+
+        /// <summary>
         /// The OBB entries load each Vector3D field with the double after it (the last field with the double before it):
         /// that double must lie in the same struct. The fields' order and the struct's size are what the loads assume.
         /// </summary>

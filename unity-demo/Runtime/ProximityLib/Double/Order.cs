@@ -45,14 +45,14 @@ namespace ProximityLib.Double
 
         /// <summary>Whether the pair must be swapped into canonical order: b strictly before a.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Swap(Obb3 a, Obb3 b)
+        public static bool Swap(in Obb3 a, in Obb3 b)
         {
             double x = a.Center.X, y = b.Center.X;
             return x != y ? x > y : Tail(a, b) > 0;
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static int Tail(Obb3 a, Obb3 b)
+        private static int Tail(in Obb3 a, in Obb3 b)
         {
             int c = Compare(a.Center, b.Center);
             if (c == 0) c = Compare(a.HalfExtents, b.HalfExtents);
@@ -64,14 +64,14 @@ namespace ProximityLib.Double
 
         /// <summary>Whether the pair must be swapped into canonical order: b strictly before a.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Swap(Obb2 a, Obb2 b)
+        public static bool Swap(in Obb2 a, in Obb2 b)
         {
             double x = a.Center.X, y = b.Center.X;
             return x != y ? x > y : Tail(a, b) > 0;
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static int Tail(Obb2 a, Obb2 b)
+        private static int Tail(in Obb2 a, in Obb2 b)
         {
             int c = Compare(a.Center, b.Center);
             if (c == 0) c = Compare(a.HalfExtents, b.HalfExtents);

@@ -21,8 +21,8 @@ namespace ProximityLib.Double
     public static partial class ProximityQuery
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Aabb3 a, Obb3 b, out bool inRange) => Kernels.AabbObbOverlaps(a, b, out inRange);
+        internal static bool Core(in Aabb3 a, in Obb3 b, out bool inRange) => Kernels.AabbObbOverlaps(a, b, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Aabb2 a, Obb2 b, out bool inRange) => Kernels.BoxBoxOverlaps2(a.ToBox2(), b.ToBox2(), out inRange);
+        internal static bool Core(in Aabb2 a, in Obb2 b, out bool inRange) => Kernels.AabbObbOverlaps2(a, b, out inRange);
     }
 }

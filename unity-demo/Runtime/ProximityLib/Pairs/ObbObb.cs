@@ -26,15 +26,10 @@ namespace ProximityLib.Double
     public static partial class ProximityQuery
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Obb3 a, Obb3 b, out bool inRange) =>
+        internal static bool Core(in Obb3 a, in Obb3 b, out bool inRange) => // by reference: on Mono each copy of an OBB (128 bytes) is a memcpy call
             Order.Swap(a, b) ? Kernels.ObbObbOverlaps(b, a, out inRange) : Kernels.ObbObbOverlaps(a, b, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Obb2 a, Obb2 b, out bool inRange)
-        {
-            // One call site, so the inlined test is compiled once rather than once per order. (For Obb3 the selected
-            // OBBs are copied to pass them by reference, and two sites measured faster.)
-            bool swap = Order.Swap(a, b);
-            return Kernels.BoxBoxOverlaps2((swap ? b : a).ToBox2(), (swap ? a : b).ToBox2(), out inRange);
-        }
+        internal static bool Core(in Obb2 a, in Obb2 b, out bool inRange) =>
+            Order.Swap(a, b) ? Kernels.ObbObbOverlaps2(b, a, out inRange) : Kernels.ObbObbOverlaps2(a, b, out inRange);
     }
 }
