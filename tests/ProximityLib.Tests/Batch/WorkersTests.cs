@@ -131,10 +131,18 @@ namespace ProximityTests.Batch
             BatchQuery.MaxDegreeOfParallelism = 4;
             BatchQuery.Overlaps(obbs, obbs2, verdicts);
             BatchQuery.Distances(s.Spheres[0], spheres, values);
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            BatchQuery.Overlaps(obbs, obbs2, verdicts);
-            BatchQuery.Distances(s.Spheres[0], spheres, values);
-            Assert.That(GC.GetAllocatedBytesForCurrentThread() - before, Is.EqualTo(0));
+            // The least over a few warm attempts: queuing a helper on a busy pool can grow the pool's global queue by a
+            // segment (7,744 bytes once in a CI run while other tests ran), an allocation of the runtime's that a later
+            // call does not repeat; an allocation of ours would recur on every attempt.
+            long least = long.MaxValue;
+            for (int attempt = 0; attempt < 5 && least > 0; attempt++)
+            {
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                BatchQuery.Overlaps(obbs, obbs2, verdicts);
+                BatchQuery.Distances(s.Spheres[0], spheres, values);
+                least = Math.Min(least, GC.GetAllocatedBytesForCurrentThread() - before);
+            }
+            Assert.That(least, Is.EqualTo(0));
         }
 
         [Test]
