@@ -66,14 +66,6 @@ namespace ProximityLib.Double
         private static double Size2(in Box2 a, in Box2 b) =>
             Range.MaxAbs(b.Origin - a.Origin, a.Hi - a.Lo, b.Hi - b.Lo);
 
-        /// <summary><see cref="BoxBoxOverlaps2(in Box2, in Box2)"/>, with whether the boxes' magnitudes allow the fast path.</summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool BoxBoxOverlaps2(in Box2 a, in Box2 b, out bool inRange)
-        {
-            inRange = Range.Box(Size2(a, b));
-            return BoxBoxOverlaps2(a, b);
-        }
-
         /// <summary>The planar case of <see cref="BoxBoxOverlapsScalar"/>: the four face axes, in A's frame.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool BoxBoxOverlaps2(in Box2 a, in Box2 b)
@@ -83,29 +75,30 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
-        /// <see cref="BoxBoxOverlaps2(in Box2, in Box2, out bool)"/> for two OBBs, from their fields: their Box2 forms have
-        /// centre 0, where the general form's offsets add only zeros, (h − (−h))·0.5 is h and h − (−h) is h + h. On Mono
-        /// building and passing the Box2 forms cost more than the test.
+        /// Whether two OBBs overlap (<see cref="BoxBoxOverlaps2(in Box2, in Box2)"/> on their Box2 forms) and whether their
+        /// magnitudes allow the fast path (<see cref="Size2"/> of those forms in range), from their fields: the Box2 forms
+        /// have centre 0, where the general form's offsets add only zeros, (h − (−h))·0.5 is h and h − (−h) is h + h. On
+        /// Mono building and passing the Box2 forms cost more than the test.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool ObbObbOverlaps2(in Obb2 a, in Obb2 b, out bool inRange)
         {
             var tw = b.Center - a.Center;
-            Vector2D ha = a.HalfExtents, hb = b.HalfExtents, ax = a.AxisX, bx = b.AxisX;
+            Vector2D ha = a.HalfExtents, hb = b.HalfExtents;
             inRange = Range.Box(Range.MaxAbs(tw, ha + ha, hb + hb));
-            return OverlapsCentered2(tw, ax, new Vector2D(-ax.Y, ax.X), ha, bx, new Vector2D(-bx.Y, bx.X), hb);
+            return OverlapsCentered2(tw, a.AxisX, a.AxisY, ha, b.AxisX, b.AxisY, hb);
         }
 
         /// <summary><see cref="ObbObbOverlaps2"/> for an AABB (its Box2 form: origin Min, [0, Max − Min], unit axes) and an OBB.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool AabbObbOverlaps2(in Aabb2 a, in Obb2 b, out bool inRange)
         {
-            var ha = (a.Max - a.Min) * 0.5;
+            var ea = a.Max - a.Min;
+            var ha = ea * 0.5;
             var hb = b.HalfExtents;
             var ob = b.Center - a.Min;
-            var bx = b.AxisX;
-            inRange = Range.Box(Range.MaxAbs(ob, a.Max - a.Min, hb + hb));
-            return OverlapsCentered2(ob - ha, Vector2D.UnitX, Vector2D.UnitY, ha, bx, new Vector2D(-bx.Y, bx.X), hb);
+            inRange = Range.Box(Range.MaxAbs(ob, ea, hb + hb));
+            return OverlapsCentered2(ob - ha, Vector2D.UnitX, Vector2D.UnitY, ha, b.AxisX, b.AxisY, hb);
         }
 
         /// <summary><see cref="BoxBoxOverlaps2(in Box2, in Box2)"/> on boxes centred on their origins, tw = B's centre − A's centre.</summary>

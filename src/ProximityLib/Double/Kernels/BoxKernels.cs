@@ -361,15 +361,10 @@ namespace ProximityLib.Double
         private static double Size(in Box a, in Box b) =>
             Range.MaxAbs(b.Origin - a.Origin, a.Hi - a.Lo, b.Hi - b.Lo);
 
-        /// <summary><see cref="BoxBoxOverlaps(in Box, in Box)"/>, with whether the boxes' magnitudes allow the fast path.</summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool BoxBoxOverlaps(in Box a, in Box b, out bool inRange)
-        {
-            inRange = Range.Box(Size(a, b));
-            return BoxBoxOverlaps(a, b);
-        }
-
-        /// <summary><see cref="BoxBoxOverlaps(in Box, in Box, out bool)"/> for two OBBs, on AVX2 without building their <see cref="Box"/> forms.</summary>
+        /// <summary>
+        /// Whether two OBBs overlap (<see cref="BoxBoxOverlaps(in Box, in Box)"/> on their <see cref="Box"/> forms, without
+        /// building them) and whether their magnitudes allow the fast path (<see cref="Size"/> of those forms in range).
+        /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool ObbObbOverlaps(in Obb3 a, in Obb3 b, out bool inRange)
         {
@@ -397,7 +392,7 @@ namespace ProximityLib.Double
             return OverlapsCenteredScalar(tw, a.AxisX, a.AxisY, a.AxisZ, ha, b.AxisX, b.AxisY, b.AxisZ, hb, false);
         }
 
-        /// <summary><see cref="BoxBoxOverlaps(in Box, in Box, out bool)"/> for an AABB and an OBB, on AVX2 without building their <see cref="Box"/> forms.</summary>
+        /// <summary><see cref="ObbObbOverlaps"/> for an AABB and an OBB.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool AabbObbOverlaps(in Aabb3 a, in Obb3 b, out bool inRange)
         {
@@ -419,10 +414,11 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool AabbObbOverlapsScalar(in Aabb3 a, in Obb3 b, out bool inRange)
         {
-            var ha = (a.Max - a.Min) * 0.5;
+            var ea = a.Max - a.Min;
+            var ha = ea * 0.5;
             var hb = b.HalfExtents;
             var ob = b.Center - a.Min;
-            inRange = Range.Box(Range.MaxAbs(ob, a.Max - a.Min, hb + hb));
+            inRange = Range.Box(Range.MaxAbs(ob, ea, hb + hb));
             return OverlapsCenteredScalar(ob - ha, Vector3D.UnitX, Vector3D.UnitY, Vector3D.UnitZ, ha, b.AxisX, b.AxisY, b.AxisZ, hb, false);
         }
 
