@@ -60,8 +60,23 @@ namespace ProximityLib.Double
         /// under either rule (max of ±0 and +0), so the sum is +0 on both. A NaN (from an overflowed difference) can
         /// only arise where the range check has already sent the query to the slow path.
         /// </summary>
+        /// <remarks>
+        /// Without the NET intrinsics (Mono, Unity) min(m, 0) + max(n, 0) is formed as ((m − |m|) + (n + |n|))·0.5: Mono
+        /// compiles Math.Min/Max and conditionals to branches, which mispredict on mixed inputs (the segment–box
+        /// minimum took 1.3 times as long there), and Math.Abs to one mask. The same value: m − |m| is 2m or +0,
+        /// n + |n| is 2n or +0, at most one is not 0 (lo ≤ hi), doubling and halving are exact in range, and inside the
+        /// interval the sum is +0 as above (−0 − 0 + (+0) = +0).
+        /// </remarks>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
+#if NET
         private static double Outside(double e, double lo, double hi) => Num.Min(e - lo, 0) + Num.Max(e - hi, 0);
+#else
+        private static double Outside(double e, double lo, double hi)
+        {
+            double m = e - lo, n = e - hi;
+            return ((m - Math.Abs(m)) + (n + Math.Abs(n))) * 0.5;
+        }
+#endif
 
         /// <summary>
         /// Shrinks the bracket [left, right] of the minimum with breakpoint b (skipped outside the bracket, and when not a
