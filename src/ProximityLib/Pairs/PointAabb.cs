@@ -11,7 +11,7 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult2 Core(Vector2D a, Aabb2 b, out bool inRange) => Kernels.PointAabb(a.To3(), b.Min.To3(), b.Max.To3(), true, out inRange).AsPointFirst(a.To3()).To2();
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static double DistanceCore(Vector3D a, Aabb3 b, out bool inRange) => Kernels.PointAabbDistance(a, b.Min, b.Max, false, out inRange);
+        internal static double DistanceCore(in Vector3D a, in Aabb3 b, out bool inRange) => Kernels.PointAabbDistance(a, b.Min, b.Max, false, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static double DistanceCore(Vector2D a, Aabb2 b, out bool inRange) => Kernels.PointAabbDistance(a.To3(), b.Min.To3(), b.Max.To3(), true, out inRange);
     }
@@ -19,7 +19,7 @@ namespace ProximityLib.Double
     public static partial class ProximityQuery
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Vector3D a, Aabb3 b) => Kernels.PointInAabb(a, b.Min, b.Max);
+        internal static bool Core(in Vector3D a, in Aabb3 b) => Kernels.PointInAabb(a, b.Min, b.Max);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Vector2D a, Aabb2 b) => Kernels.PointInAabb(a.To3(), b.Min.To3(), b.Max.To3());
     }

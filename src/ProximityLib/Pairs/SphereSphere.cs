@@ -11,7 +11,7 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult2 Core(Circle a, Circle b, out bool inRange) => Kernels.SphereSphere(a.Center.To3(), a.Radius, b.Center.To3(), b.Radius, out inRange).To2();
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static double DistanceCore(Sphere a, Sphere b, out bool inRange) => Kernels.SphereSphereDistance(a.Center, a.Radius, b.Center, b.Radius, out inRange);
+        internal static double DistanceCore(in Sphere a, in Sphere b, out bool inRange) => Kernels.SphereSphereDistance(a.Center, a.Radius, b.Center, b.Radius, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static double DistanceCore(Circle a, Circle b, out bool inRange) => Kernels.SphereSphereDistance(a.Center.To3(), a.Radius, b.Center.To3(), b.Radius, out inRange);
     }
@@ -19,7 +19,7 @@ namespace ProximityLib.Double
     public static partial class ProximityQuery
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Sphere a, Sphere b, out bool inRange) => Kernels.PointInSphere(b.Center, a.Center, a.Radius + b.Radius, out inRange);
+        internal static bool Core(in Sphere a, in Sphere b, out bool inRange) => Kernels.PointInSphere(b.Center, a.Center, a.Radius + b.Radius, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Circle a, Circle b, out bool inRange) => Kernels.PointInSphere(b.Center.To3(), a.Center.To3(), a.Radius + b.Radius, out inRange);
     }

@@ -13,7 +13,7 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult2 Core(Aabb2 a, Aabb2 b, out bool inRange) => Kernels.AabbAabb(a.Min.To3(), a.Max.To3(), b.Min.To3(), b.Max.To3(), true, out inRange).To2();
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static double DistanceCore(Aabb3 a, Aabb3 b, out bool inRange) => Kernels.AabbAabbDistance(a.Min, a.Max, b.Min, b.Max, false, out inRange);
+        internal static double DistanceCore(in Aabb3 a, in Aabb3 b, out bool inRange) => Kernels.AabbAabbDistance(a.Min, a.Max, b.Min, b.Max, false, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static double DistanceCore(Aabb2 a, Aabb2 b, out bool inRange) => Kernels.AabbAabbDistance(a.Min.To3(), a.Max.To3(), b.Min.To3(), b.Max.To3(), true, out inRange);
     }
@@ -21,7 +21,7 @@ namespace ProximityLib.Double
     public static partial class ProximityQuery
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Aabb3 a, Aabb3 b) => Kernels.AabbAabbOverlaps(a.Min, a.Max, b.Min, b.Max);
+        internal static bool Core(in Aabb3 a, in Aabb3 b) => Kernels.AabbAabbOverlaps(a.Min, a.Max, b.Min, b.Max);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Aabb2 a, Aabb2 b) => Kernels.AabbAabbOverlaps(a.Min.To3(), a.Max.To3(), b.Min.To3(), b.Max.To3());
     }

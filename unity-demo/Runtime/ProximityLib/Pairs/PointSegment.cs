@@ -13,7 +13,7 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult2 Core(Vector2D a, Segment2 b, out bool inRange) => Kernels.PointSegment(a.To3(), b.Start.To3(), b.End.To3(), out inRange).AsPointFirst(a.To3()).To2();
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static double DistanceCore(Vector3D a, Segment3 b, out bool inRange) => Kernels.PointSegmentDistance(a, b.Start, b.End, out inRange);
+        internal static double DistanceCore(in Vector3D a, in Segment3 b, out bool inRange) => Kernels.PointSegmentDistance(a, b.Start, b.End, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static double DistanceCore(Vector2D a, Segment2 b, out bool inRange) => Kernels.PointSegmentDistance(a.To3(), b.Start.To3(), b.End.To3(), out inRange);
     }
@@ -21,7 +21,7 @@ namespace ProximityLib.Double
     public static partial class ProximityQuery
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Vector3D a, Segment3 b, out bool inRange) => Kernels.PointOnSegment(a, b.Start, b.End, out inRange);
+        internal static bool Core(in Vector3D a, in Segment3 b, out bool inRange) => Kernels.PointOnSegment(a, b.Start, b.End, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Vector2D a, Segment2 b, out bool inRange) => Kernels.PointOnSegment(a.To3(), b.Start.To3(), b.End.To3(), out inRange);
     }

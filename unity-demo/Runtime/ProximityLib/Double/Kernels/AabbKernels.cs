@@ -73,7 +73,7 @@ namespace ProximityLib.Double
         /// on the same values (zero signs included), so the same bits and <paramref name="inRange"/>.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double AabbAabbDistance(Vector3D minA, Vector3D maxA, Vector3D minB, Vector3D maxB, bool planar, out bool inRange)
+        public static double AabbAabbDistance(in Vector3D minA, in Vector3D maxA, in Vector3D minB, in Vector3D maxB, bool planar, out bool inRange)
         {
             double ax = minB.X - maxA.X, bx = minA.X - maxB.X;
             double ay = minB.Y - maxA.Y, by = minA.Y - maxB.Y;
@@ -93,7 +93,7 @@ namespace ProximityLib.Double
 
         /// <summary>Whether the closed boxes meet: every axis's intervals overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool AabbAabbOverlaps(Vector3D minA, Vector3D maxA, Vector3D minB, Vector3D maxB) =>
+        public static bool AabbAabbOverlaps(in Vector3D minA, in Vector3D maxA, in Vector3D minB, in Vector3D maxB) =>
             minA.X <= maxB.X && maxA.X >= minB.X && minA.Y <= maxB.Y && maxA.Y >= minB.Y && minA.Z <= maxB.Z && maxA.Z >= minB.Z;
     }
 }

@@ -136,7 +136,7 @@ namespace ProximityLib.Double
         /// segment's squared length lies in the fast range, or it is a point (then the test is p == a, exact).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool PointOnSegment(Vector3D p, Vector3D a, Vector3D b, out bool inRange)
+        public static bool PointOnSegment(in Vector3D p, in Vector3D a, in Vector3D b, out bool inRange)
         {
             var r = PointSegmentResidual(p, a, b, out _, out double dd);
             inRange = Range.In(dd) || a == b;
@@ -297,7 +297,7 @@ namespace ProximityLib.Double
 
         /// <summary>The distance of <see cref="PointSegment"/> alone, from the same operations (so the same bits) and the same <paramref name="inRange"/>.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double PointSegmentDistance(Vector3D p, Vector3D a, Vector3D b, out bool inRange)
+        public static double PointSegmentDistance(in Vector3D p, in Vector3D a, in Vector3D b, out bool inRange)
         {
             var r = PointSegmentResidual(p, a, b, out _, out double dd);
             double r2 = r.LengthSquared;
@@ -334,7 +334,7 @@ namespace ProximityLib.Double
 
         /// <summary>The distance of <see cref="PointAabb"/> alone (the same operations and <paramref name="inRange"/>).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double PointAabbDistance(Vector3D p, Vector3D min, Vector3D max, bool planar, out bool inRange)
+        public static double PointAabbDistance(in Vector3D p, in Vector3D min, in Vector3D max, bool planar, out bool inRange)
         {
             var c = new Vector3D(Num.Clamp(p.X, min.X, max.X), Num.Clamp(p.Y, min.Y, max.Y), Num.Clamp(p.Z, min.Z, max.Z));
             if (p != c)
@@ -427,7 +427,7 @@ namespace ProximityLib.Double
 
         /// <summary>Whether p lies in the closed sphere; <paramref name="inRange"/> as for <see cref="WithinRadius"/>.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool PointInSphere(Vector3D p, Vector3D center, double radius, out bool inRange) =>
+        public static bool PointInSphere(in Vector3D p, in Vector3D center, double radius, out bool inRange) =>
             WithinRadius((p - center).LengthSquared, radius, out inRange);
 
         /// <summary>
@@ -476,7 +476,7 @@ namespace ProximityLib.Double
 
         /// <summary>The distance of <see cref="SphereSphere"/> alone (the same operations and <paramref name="inRange"/>).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double SphereSphereDistance(Vector3D ca, double ra, Vector3D cb, double rb, out bool inRange)
+        public static double SphereSphereDistance(in Vector3D ca, double ra, in Vector3D cb, double rb, out bool inRange)
         {
             var d = cb - ca;
             double d2 = d.LengthSquared;
@@ -487,7 +487,7 @@ namespace ProximityLib.Double
 
         /// <summary>Whether p lies in the closed axis-aligned box [min, max].</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool PointInAabb(Vector3D p, Vector3D min, Vector3D max) =>
+        public static bool PointInAabb(in Vector3D p, in Vector3D min, in Vector3D max) =>
             p.X >= min.X && p.X <= max.X && p.Y >= min.Y && p.Y <= max.Y && p.Z >= min.Z && p.Z <= max.Z;
 
         /// <summary>Squared distance from p to the closed axis-aligned box (Arvo's test without the square root); 0 inside.</summary>
