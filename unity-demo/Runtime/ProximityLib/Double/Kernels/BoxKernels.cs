@@ -93,7 +93,7 @@ namespace ProximityLib.Double
         /// <summary>
         /// The scalar form of <see cref="Penetration"/>: the only one on netstandard2.1 (Unity) and without AVX2. In plain
         /// doubles (<see cref="AxisSearch"/>): Mono keeps every Vector3D temporary in memory, and the same steps written
-        /// on Vector3D took 1.6 times as long there.
+        /// on Vector3D took about 1.5 times as long there.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
         internal static double PenetrationScalar(in Box a, in Box b, Vector3D t, out Vector3D push)
@@ -160,8 +160,8 @@ namespace ProximityLib.Double
             {
                 Ax0 = a.X.X; Ax1 = a.X.Y; Ax2 = a.X.Z; Ay0 = a.Y.X; Ay1 = a.Y.Y; Ay2 = a.Y.Z; Az0 = a.Z.X; Az1 = a.Z.Y; Az2 = a.Z.Z;
                 Bx0 = b.X.X; Bx1 = b.X.Y; Bx2 = b.X.Z; By0 = b.Y.X; By1 = b.Y.Y; By2 = b.Y.Z; Bz0 = b.Z.X; Bz1 = b.Z.Y; Bz2 = b.Z.Z;
-                _hax = (a.Hi.X - a.Lo.X) * 0.5; _hay = (a.Hi.Y - a.Lo.Y) * 0.5; _haz = (a.Hi.Z - a.Lo.Z) * 0.5;
-                _hbx = (b.Hi.X - b.Lo.X) * 0.5; _hby = (b.Hi.Y - b.Lo.Y) * 0.5; _hbz = (b.Hi.Z - b.Lo.Z) * 0.5;
+                Vector3D ha = a.Half, hb = b.Half;
+                _hax = ha.X; _hay = ha.Y; _haz = ha.Z; _hbx = hb.X; _hby = hb.Y; _hbz = hb.Z;
                 _tx = t.X; _ty = t.Y; _tz = t.Z;
                 Least = double.PositiveInfinity; X = 0; Y = 0; Z = 0;
             }
