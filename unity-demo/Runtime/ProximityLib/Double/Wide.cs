@@ -58,6 +58,10 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Length2(Vector3D v, double v2) => In(v2) || (v.X == 0 && v.Y == 0 && v.Z == 0);
 
+        /// <summary><see cref="Length2(Vector3D, double)"/> of the vector (x, y, z), for kernels in plain doubles.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool Length2(double x, double y, double z, double v2) => In(v2) || (x == 0 && y == 0 && z == 0);
+
         /// <summary>Whether the largest relative magnitude m of a box kernel lies in [2^-450, 2^450] or is 0 (everything coincides).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Box(double m) => (m >= BoxMin && m <= BoxMax) || m == 0;
