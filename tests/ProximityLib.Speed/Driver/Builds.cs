@@ -7,7 +7,7 @@ using System.Text.RegularExpressions;
 
 namespace ProximitySpeed
 {
-    /// <summary>The programs the modes run besides this one: the Mono probe, and the cases compiled against an older library.</summary>
+    /// <summary>The programs the modes run besides this one: the Mono probe, and the cases compiled against an older library (for .NET and for Mono).</summary>
     public static class Builds
     {
         /// <summary>The repository's root (the folder holding ProximityLib.sln), found upwards from this program.</summary>
@@ -39,11 +39,7 @@ namespace ProximitySpeed
         /// </summary>
         public static string Mono(string work)
         {
-            string mono = Which("mono") ?? throw new IOException("mono is not installed (apt-get install mono-devel)");
-            string lib = Path.GetFullPath(Path.Combine(Path.GetDirectoryName(ResolveLink(mono))!, "..", "lib", "mono", "4.5"));
-            if (!File.Exists(Path.Combine(lib, "mscorlib.dll")) || !File.Exists(Path.Combine(lib, "Facades", "netstandard.dll")))
-                throw new IOException("Mono's class libraries are not under " + lib);
-            var refs = Directory.GetFiles(lib, "*.dll").Append(Path.Combine(lib, "Facades", "netstandard.dll")).Select(f => "-r:" + f).ToList();
+            var refs = MonoReferences();
             Directory.CreateDirectory(work);
             string Sources(string project) => string.Join("\n", Directory.GetFiles(Path.Combine(Root, "src", project), "*.cs", SearchOption.AllDirectories)
                 .Where(f => !f.Contains("/obj/") && !f.Contains("/bin/")).OrderBy(f => f, StringComparer.Ordinal));
@@ -55,6 +51,16 @@ namespace ProximitySpeed
             var probeSources = CaseSources(true).Concat(Directory.GetFiles(Path.Combine(Root, "tests", "ProximityLib.Speed", "Probe"), "*.cs"));
             Csc(work, refs, "-t:exe", "-main:ProximitySpeed.ProbeProgram", "-out:" + probe, "-r:" + library, "-r:" + scenes, string.Join("\n", probeSources));
             return probe;
+        }
+
+        /// <summary>-r: options for Mono's class libraries (lib/mono/4.5 and Facades/netstandard.dll beside the mono on PATH).</summary>
+        private static List<string> MonoReferences()
+        {
+            string mono = Which("mono") ?? throw new IOException("mono is not installed (apt-get install mono-devel)");
+            string lib = Path.GetFullPath(Path.Combine(Path.GetDirectoryName(ResolveLink(mono))!, "..", "lib", "mono", "4.5"));
+            if (!File.Exists(Path.Combine(lib, "mscorlib.dll")) || !File.Exists(Path.Combine(lib, "Facades", "netstandard.dll")))
+                throw new IOException("Mono's class libraries are not under " + lib);
+            return Directory.GetFiles(lib, "*.dll").Append(Path.Combine(lib, "Facades", "netstandard.dll")).Select(f => "-r:" + f).ToList();
         }
 
         private static void Csc(string work, List<string> refs, params string[] args)
@@ -86,15 +92,7 @@ namespace ProximitySpeed
         /// </summary>
         public static string Old(string gitRef, string work)
         {
-            Directory.CreateDirectory(work);
-            var (code, output) = Shell.Run("git", new[] { "-C", Root, "rev-parse", "--verify", gitRef + "^{commit}" }, null);
-            if (code != 0) throw new ArgumentException("'" + gitRef + "' is not a commit of this repository");
-            string commit = output.Trim();
-            var tar = Path.Combine(work, "old.tar");
-            if (Shell.Run("git", new[] { "-C", Root, "archive", "-o", tar, commit, "src/ProximityLib" }, null).Code != 0
-                || Shell.Run("tar", new[] { "-xf", tar, "-C", work }, null).Code != 0)
-                throw new IOException("could not export src/ProximityLib at " + gitRef);
-            string lib = Path.Combine(work, "src", "ProximityLib");
+            string lib = Export(gitRef, work);
             File.WriteAllText(Path.Combine(work, "ProximityLibOld.csproj"), $"""
                 <Project Sdk="Microsoft.NET.Sdk">
                   <PropertyGroup>
@@ -109,10 +107,7 @@ namespace ProximitySpeed
                   <ItemGroup><Compile Include="{lib}/**/*.cs" Exclude="{lib}/obj/**;{lib}/bin/**" /></ItemGroup>
                 </Project>
                 """);
-            var sources = CaseSources(false);
-            // Issue 12's cases need its shapes and ray casts: left out against a library without them (no RayHit.cs).
-            if (!File.Exists(Path.Combine(lib, "RayHit.cs")))
-                sources.RemoveAll(s => Path.GetFileName(s) is "PairsNew.cs" or "BaselinesNew.cs" or "Raycasts.cs" or "ShapesNew.cs");
+            var sources = OldCaseSources(lib);
             string casesProject = Path.Combine(work, "ProximityLib.Speed.CasesOld.csproj");
             void WriteCases() => File.WriteAllText(casesProject, $"""
                 <Project Sdk="Microsoft.NET.Sdk">
@@ -142,6 +137,52 @@ namespace ProximitySpeed
             if (built != 0) throw new IOException($"the cases do not build against the library at {gitRef}:\n" +
                 string.Join("\n", log.Split('\n').Where(l => l.Contains("error")).Distinct().Take(20)));
             return Path.Combine(outDir, "ProximityLib.Speed.CasesOld.dll");
+        }
+
+        /// <summary>
+        /// The Mono twin of <see cref="Old"/>: src/ProximityLib at <paramref name="gitRef"/> compiled by Roslyn against Mono's
+        /// class libraries as ProximityLibOld.dll (as <see cref="Mono"/> compiles the working tree's), and the cases against
+        /// it as ProximityLib.Speed.CasesOld.dll beside it, for the Mono probe's --old. Returns the cases' path.
+        /// </summary>
+        public static string OldMono(string gitRef, string work)
+        {
+            string lib = Export(gitRef, work);
+            var refs = MonoReferences();
+            string library = Path.Combine(work, "ProximityLibOld.dll"), cases = Path.Combine(work, "ProximityLib.Speed.CasesOld.dll");
+            Csc(work, refs, "-t:library", "-unsafe+", "-out:" + library, string.Join("\n", Directory.GetFiles(lib, "*.cs", SearchOption.AllDirectories)
+                .Where(f => !f.Contains("/obj/") && !f.Contains("/bin/")).OrderBy(f => f, StringComparer.Ordinal)));
+            var sources = OldCaseSources(lib);
+            try { Csc(work, refs, "-t:library", "-out:" + cases, "-r:" + library, string.Join("\n", sources)); }
+            catch (IOException) when (sources.RemoveAll(s => Path.GetFileName(s) == "DistanceOnly.cs") > 0)
+            {
+                // An older library may lack the distance-only entry point: those rows are n/a, as in Old.
+                Csc(work, refs, "-t:library", "-out:" + cases, "-r:" + library, string.Join("\n", sources));
+            }
+            return cases;
+        }
+
+        /// <summary>src/ProximityLib at <paramref name="gitRef"/>, exported under <paramref name="work"/>; returns its folder.</summary>
+        private static string Export(string gitRef, string work)
+        {
+            Directory.CreateDirectory(work);
+            var (code, output) = Shell.Run("git", new[] { "-C", Root, "rev-parse", "--verify", gitRef + "^{commit}" }, null);
+            if (code != 0) throw new ArgumentException("'" + gitRef + "' is not a commit of this repository");
+            string commit = output.Trim();
+            var tar = Path.Combine(work, "old.tar");
+            if (Shell.Run("git", new[] { "-C", Root, "archive", "-o", tar, commit, "src/ProximityLib" }, null).Code != 0
+                || Shell.Run("tar", new[] { "-xf", tar, "-C", work }, null).Code != 0)
+                throw new IOException("could not export src/ProximityLib at " + gitRef);
+            return Path.Combine(work, "src", "ProximityLib");
+        }
+
+        /// <summary>The cases' sources for an A/B build against the exported library at <paramref name="lib"/>.</summary>
+        private static List<string> OldCaseSources(string lib)
+        {
+            var sources = CaseSources(false);
+            // Issue 12's cases need its shapes and ray casts: left out against a library without them (no RayHit.cs).
+            if (!File.Exists(Path.Combine(lib, "RayHit.cs")))
+                sources.RemoveAll(s => Path.GetFileName(s) is "PairsNew.cs" or "BaselinesNew.cs" or "Raycasts.cs" or "ShapesNew.cs");
+            return sources;
         }
 
         private static string? Which(string program) =>

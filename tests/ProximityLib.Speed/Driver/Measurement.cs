@@ -127,7 +127,9 @@ namespace ProximitySpeed
         /// Runs the probes: <see cref="Options.Processes"/> per mode, the modes interleaved (pgo 1, nopgo 1, mono 1, pgo 2,
         /// …) so a change of machine load falls on every mode alike. Progress goes to stderr.
         /// </summary>
-        public static Measurement Run(Options options, string work, string? old, string? oldFilter)
+        /// <remarks><paramref name="old"/> and <paramref name="oldMono"/>: the cases compiled against another library for .NET and
+        /// for Mono (<see cref="Builds.Old"/>, <see cref="Builds.OldMono"/>), measured as "old …" cases in the same processes.</remarks>
+        public static Measurement Run(Options options, string work, string? old, string? oldMono, string? oldFilter)
         {
             var clock = Stopwatch.StartNew();
             Directory.CreateDirectory(work);
@@ -144,8 +146,9 @@ namespace ProximitySpeed
                 foreach (var mode in options.Modes)
                 {
                     var args = new List<string>(probeArgs) { "--seed", (p + 1).ToString(CultureInfo.InvariantCulture) };
-                    if (old != null && mode != Mode.Mono) args.AddRange(new[] { "--old", old });
-                    if (old != null && oldFilter != null && mode != Mode.Mono) args.AddRange(new[] { "--old-filter", oldFilter });
+                    string? against = mode == Mode.Mono ? oldMono : old;
+                    if (against != null) args.AddRange(new[] { "--old", against });
+                    if (against != null && oldFilter != null) args.AddRange(new[] { "--old-filter", oldFilter });
                     var env = new Dictionary<string, string?> { ["DOTNET_TieredPGO"] = mode == Mode.NoPgo ? "0" : null };
                     var started = Stopwatch.StartNew();
                     var (code, output) = mode == Mode.Mono

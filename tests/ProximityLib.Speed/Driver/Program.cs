@@ -37,7 +37,8 @@ namespace ProximitySpeed
               report              measure in every mode and write <out>/performance.md and performance.png
                                   (modes pgo, nopgo, mono; the batch rows also against the library at 5a0d5e3)
               ab --against <ref>  the library at a git ref against the working tree's, interleaved in one process per
-                                  measurement, in both PGO modes: new ns, old ns, new ÷ old with its spread
+                                  measurement, in both PGO modes unless --modes says (mono: both compiled for Mono
+                                  into one program): new ns, old ns, new ÷ old with its spread
               compare A B         two files written by --save: the relative difference of every case's median
                                   between the two measurements, per mode (how well a report reproduces)
             options:
@@ -77,7 +78,7 @@ namespace ProximitySpeed
                             }
                         case "run":
                             {
-                                var m = Measurement.Run(options, work, null, null);
+                                var m = Measurement.Run(options, work, null, null, null);
                                 if (options.Save != null) Saved.Write(m, options.Save);
                                 Console.Write(Text.Times(m));
                                 return 0;
@@ -90,7 +91,7 @@ namespace ProximitySpeed
                                 string load = Measurement.Load();
                                 Console.Error.WriteLine($"load before: {load}");
                                 string old = Builds.Old(BatchReference, Path.Combine(work, "old"));
-                                var m = Measurement.Run(options, work, old, "batch");
+                                var m = Measurement.Run(options, work, old, null, "batch");
                                 if (options.Save != null) Saved.Write(m, options.Save);
                                 Report.Write(m, options.Out, load, options.Previous == null ? null : Saved.Compare(options.Previous, m));
                                 Console.WriteLine($"wrote {Path.Combine(options.Out, "performance.md")} and performance.png in {m.Elapsed.TotalMinutes:0.0} min");
@@ -100,9 +101,9 @@ namespace ProximitySpeed
                             {
                                 if (options.Against == null) throw new ArgumentException("ab needs --against <git ref>");
                                 if (!args.Contains("--modes")) options.Modes = new List<Mode> { Mode.Pgo, Mode.NoPgo };
-                                if (options.Modes.Contains(Mode.Mono)) throw new ArgumentException("ab runs on .NET only (pgo, nopgo)");
-                                string old = Builds.Old(options.Against, Path.Combine(work, "old"));
-                                var m = Measurement.Run(options, work, old, null);
+                                string? old = options.Modes.Any(x => x != Mode.Mono) ? Builds.Old(options.Against, Path.Combine(work, "old")) : null;
+                                string? oldMono = options.Modes.Contains(Mode.Mono) ? Builds.OldMono(options.Against, Path.Combine(work, "old-mono")) : null;
+                                var m = Measurement.Run(options, work, old, oldMono, null);
                                 Console.Write(Text.Ab(m, options.Against));
                                 return 0;
                             }

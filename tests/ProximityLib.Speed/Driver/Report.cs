@@ -223,7 +223,7 @@ namespace ProximitySpeed
             md.AppendLine($"- Batch rows are per pair; their \"old batch\" twins are the same cases compiled against the library at {Program.BatchReference}, " +
                           "measured in the same processes.");
             md.AppendLine("- Reproduce a subset: `dotnet run --project tests/ProximityLib.Speed -c Release -- run --modes pgo,nopgo,mono --filter \"3D OBB–OBB\"`; " +
-                          "an A/B against another commit: `-- ab --against <ref>`.");
+                          "an A/B against another commit: `-- ab --against <ref>` (.NET with and without PGO; `--modes mono`: both libraries compiled into one Mono program).");
             File.WriteAllText(Path.Combine(dir, "performance.md"), md.ToString().Replace("\r\n", "\n"));
             Plot(m, accuracy, Path.Combine(dir, "performance.png"));
         }
