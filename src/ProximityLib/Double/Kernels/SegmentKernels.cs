@@ -23,33 +23,38 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double SegmentSegmentInline(Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, out double s, out double t, out bool inRange)
         {
-            var d0 = a1 - a0;
-            var d1 = b1 - b0;
-            var w = b0 - a0;
-            double a = d0.LengthSquared, e = d1.LengthSquared, size2 = a + e + w.LengthSquared;
+            // In plain doubles, each step as Vector3D's operations would form it, in their order (the same bits): Mono keeps
+            // every Vector3D temporary in memory, a round of stores and loads per operation. d0 = a1 − a0, d1 = b1 − b0 and
+            // w = b0 − a0 are scaled by k in place below; the products and sums are Cross, Dot and LengthSquared written
+            // out. Range.In(size2) and 1 / k are formed where they are used: past 32 IL locals the JIT no longer inlines
+            // this method.
+            double d0x = a1.X - a0.X, d0y = a1.Y - a0.Y, d0z = a1.Z - a0.Z;
+            double d1x = b1.X - b0.X, d1y = b1.Y - b0.Y, d1z = b1.Z - b0.Z;
+            double wx = b0.X - a0.X, wy = b0.Y - a0.Y, wz = b0.Z - a0.Z;
+            double size2 = (d0x * d0x + d0y * d0y + d0z * d0z) + (d1x * d1x + d1y * d1y + d1z * d1z) + (wx * wx + wy * wy + wz * wz);
             double k = InverseSizeScale(size2);
-            var d0k = d0 * k;
-            var d1k = d1 * k;
-            var wk = w * k;
-            var n = Vector3D.Cross(d0k, d1k);
-            double nn = n.LengthSquared;
-            // The lines' closest parameters are si = sNum / nn and ti = tNum / nn.
-            double sNum = Vector3D.Dot(Vector3D.Cross(wk, d1k), n), tNum = Vector3D.Dot(Vector3D.Cross(wk, d0k), n);
+            d0x *= k; d0y *= k; d0z *= k; d1x *= k; d1y *= k; d1z *= k; wx *= k; wy *= k; wz *= k;
+            // n = d0 × d1.
+            double nx = d0y * d1z - d0z * d1y, ny = d0z * d1x - d0x * d1z, nz = d0x * d1y - d0y * d1x;
+            double nn = nx * nx + ny * ny + nz * nz;
+            // The lines' closest parameters are si = sNum / nn and ti = tNum / nn: sNum = (w × d1)·n, tNum = (w × d0)·n.
+            double sNum = (wy * d1z - wz * d1y) * nx + (wz * d1x - wx * d1z) * ny + (wx * d1y - wy * d1x) * nz;
+            double tNum = (wy * d0z - wz * d0y) * nx + (wz * d0x - wx * d0z) * ny + (wx * d0y - wy * d0x) * nz;
 
             // Two segments of positive length (a point has n = 0 without being parallel), well conditioned (sin²θ ≥ 1e-4;
             // the product is formed first so the test is the same in either order) and |n|² not 0 (two segments tiny
             // beside their distance can underflow it and the lengths' product alike). Everything else is rare and goes
             // out of line, returning a struct: an out argument would pin this path's s and t in memory.
-            double ak = d0k.LengthSquared, ek = d1k.LengthSquared;
+            double ak = d0x * d0x + d0y * d0y + d0z * d0z, ek = d1x * d1x + d1y * d1y + d1z * d1z;
             if (ak == 0 || ek == 0 || !(nn > 0 && nn >= 1e-4 * (ak * ek)))
             {
                 var rare = SegmentSegmentRare(a0, a1, b0, b1, nn, sNum, tNum);
                 s = rare.S; t = rare.T; inRange = rare.InRange;
                 return rare.R2;
             }
-            // The configuration's squared size in the fast range (it is not 0: neither length is), and below, the squared
-            // distance in it too or exactly 0 (a subnormal one would have lost bits, and 2^k-scaled inputs would not agree).
-            bool sized = Range.In(size2);
+            // Range.In(size2): the configuration's squared size in the fast range (it is not 0: neither length is), and
+            // below, the squared distance in it too or exactly 0 (a subnormal one would have lost bits, and 2^k-scaled
+            // inputs would not agree).
             // si ∈ [0, 1] exactly when 0 ≤ sNum ≤ nn (nn > 0; a rounded quotient of sNum > nn exceeds 1), so the
             // branch, which mispredicts on mixed inputs, does not wait for the divisions.
             if (sNum >= 0 && sNum <= nn && tNum >= 0 && tNum <= nn)
@@ -60,23 +65,34 @@ namespace ProximityLib.Double
                 s = sNum / nn; t = tNum / nn;
                 if (!(nn >= Shallow2 * (ak * ek)))
                 {
-                    var shallow = ShallowCrossing(d0k, d1k, wk, ak, ek, 1 / k, s, t, sized);
+                    var shallow = ShallowCrossing(new Vector3D(d0x, d0y, d0z), new Vector3D(d1x, d1y, d1z), new Vector3D(wx, wy, wz),
+                        ak, ek, 1 / k, s, t, Range.In(size2));
                     s = shallow.S; t = shallow.T; inRange = shallow.InRange;
                     return shallow.R2;
                 }
-                double ik = 1 / k, wn = Vector3D.Dot(wk, n), gap2 = wn * wn / nn * ik * ik;
-                inRange = sized && (wn == 0 || Range.In(gap2));
+                double wn = wx * nx + wy * ny + wz * nz, gap2 = wn * wn / nn * (1 / k) * (1 / k);
+                inRange = Range.In(size2) && (wn == 0 || Range.In(gap2));
                 return gap2;
             }
             double si = sNum / nn, ti = tNum / nn;
             // On the scaled copy: a dot product of an edge with a short offset (an end near the other segment's) would
             // underflow at the small end of the fast range, and the parameters would then not scale exactly. Scaling
             // by k is exact, so elsewhere these are the unscaled values' bits.
-            double b = Vector3D.Dot(d0k, d1k), c = -Vector3D.Dot(d0k, wk), f = -Vector3D.Dot(d1k, wk);
-            double outS = Num.Max(-si, si - 1), outT = Num.Max(-ti, ti - 1);
-            if (outS > outT || (outS == outT && !Order.Swap(a0, a1, b0, b1))) ClampFirst(ak, ek, b, c, f, si, out s, out t);
+            double b = d0x * d1x + d0y * d1y + d0z * d1z, c = -(d0x * wx + d0y * wy + d0z * wz), f = -(d1x * wx + d1y * wy + d1z * wz);
+            if (FirstFurtherOut(si, ti, a0, a1, b0, b1)) ClampFirst(ak, ek, b, c, f, si, out s, out t);
             else ClampFirst(ek, ak, b, -f, -c, ti, out t, out s); // the mirror image: t first
-            return ScaledResidual(d0k, d1k, wk, 1 / k, s, t, sized, out inRange);
+            return UnscaledLength2(d0x * s - d1x * t - wx, d0y * s - d1y * t - wy, d0z * s - d1z * t - wz, 1 / k, Range.In(size2), out inRange);
+        }
+
+        /// <summary>
+        /// Whether the first parameter of the lines' closest pair (si, ti) lies further outside [0, 1] than the second,
+        /// so it is clamped first; a tie goes to the canonically first segment, so the swapped call clamps the same one.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool FirstFurtherOut(double si, double ti, Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1)
+        {
+            double outS = Num.Max(-si, si - 1), outT = Num.Max(-ti, ti - 1);
+            return outS > outT || (outS == outT && !Order.Swap(a0, a1, b0, b1));
         }
 
         /// <summary>
@@ -247,8 +263,19 @@ namespace ProximityLib.Double
         private static double ScaledResidual(Vector3D d0k, Vector3D d1k, Vector3D wk, double ik, double s, double t, bool sized, out bool inRange)
         {
             var v = d0k * s - d1k * t - wk;
-            double r2 = v.LengthSquared * ik * ik;
-            inRange = sized && (Range.In(r2) || v == default);
+            return UnscaledLength2(v.X, v.Y, v.Z, ik, sized, out inRange);
+        }
+
+        /// <summary>
+        /// |(x, y, z)|² of a vector scaled by k, unscaled by multiplying by ik = 1/k twice (exact, a power of two), and
+        /// whether it can be trusted: <paramref name="sized"/> and the square in the fast range or exactly 0 because the
+        /// vector is.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double UnscaledLength2(double x, double y, double z, double ik, bool sized, out bool inRange)
+        {
+            double r2 = (x * x + y * y + z * z) * ik * ik;
+            inRange = sized && (Range.In(r2) || (x == 0 && y == 0 && z == 0));
             return r2;
         }
 

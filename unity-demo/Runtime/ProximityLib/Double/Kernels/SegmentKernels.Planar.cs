@@ -66,22 +66,7 @@ namespace ProximityLib.Double
             return UnscaledLength2(d0x * s - d1x * t - wx, d0y * s - d1y * t - wy, 1 / k, Range.In(size2), out inRange);
         }
 
-        /// <summary>
-        /// Whether the first parameter of the lines' closest pair (si, ti) lies further outside [0, 1] than the second,
-        /// so it is clamped first; a tie goes to the canonically first segment, so the swapped call clamps the same one.
-        /// </summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static bool FirstFurtherOut(double si, double ti, Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1)
-        {
-            double outS = Num.Max(-si, si - 1), outT = Num.Max(-ti, ti - 1);
-            return outS > outT || (outS == outT && !Order.Swap(a0, a1, b0, b1));
-        }
-
-        /// <summary>
-        /// |(x, y)|² of a vector scaled by k, unscaled by multiplying by ik = 1/k twice (exact, a power of two), and
-        /// whether it can be trusted: <paramref name="sized"/> and the square in the fast range or exactly 0 because the
-        /// vector is.
-        /// </summary>
+        /// <summary>The 3D <see cref="UnscaledLength2(double, double, double, double, bool, out bool)"/> without z.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static double UnscaledLength2(double x, double y, double ik, bool sized, out bool inRange)
         {
