@@ -28,10 +28,18 @@ namespace ProximityLib.Double
         }
         /// <summary>Signed closest distance between a capsule and a capsule (3D) without the witness points: the Distance of <see cref="Between(in Capsule3, in Capsule3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(in Capsule3 a, in Capsule3 b) => Between(a, b).Distance;
+        public static double Distance(in Capsule3 a, in Capsule3 b)
+        {
+            var r = DistanceCore(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b).Distance;
+        }
         /// <summary>Signed closest distance between a capsule and a capsule (2D) without the witness points: the Distance of <see cref="Between(in Capsule2, in Capsule2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(in Capsule2 a, in Capsule2 b) => Between(a, b).Distance;
+        public static double Distance(in Capsule2 a, in Capsule2 b)
+        {
+            var r = DistanceCore(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b).Distance;
+        }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static DistanceResult3 Slow(in Capsule3 a, in Capsule3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
@@ -75,10 +83,10 @@ namespace ProximityLib
         public static DistanceResult2 Between(Capsule2 a, Capsule2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Signed closest distance between a capsule and a capsule (3D), computed in double, without the witness points: the Distance of <see cref="Between(Capsule3, Capsule3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Capsule3 a, Capsule3 b) => Between(a, b).Distance;
+        public static float Distance(Capsule3 a, Capsule3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a capsule and a capsule (2D), computed in double, without the witness points: the Distance of <see cref="Between(Capsule2, Capsule2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Capsule2 a, Capsule2 b) => Between(a, b).Distance;
+        public static float Distance(Capsule2 a, Capsule2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
     }
 
     public static partial class ProximityQuery

@@ -305,6 +305,15 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
+        /// Whether axes [a0, a1] and [b0, b1] at distance <paramref name="dist"/> take <see cref="CapsuleCapsule"/>'s fast path
+        /// in both argument orders: its reach is the largest coordinate of b0 − a0, b1 − a0, a1 − a0 in one order and of
+        /// a0 − b0, a1 − b0, b1 − b0 in the other, and the largest of all five differences' magnitudes bounds both.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static bool AxesClear(double dist, Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1) =>
+            dist > Num.Max(Range.MaxAbs(b0 - a0, b1 - a0, a1 - a0), Num.Max(Range.MaxAbs(a1 - b0), Range.MaxAbs(b1 - b0))) * NearTouch;
+
+        /// <summary>
         /// A linear component a, thickened by ra when it is a capsule's axis, against the capsule (or, for rb = 0 and
         /// !<paramref name="solid"/>, the segment) [b0, b1] of radius rb. 3D, or 2D separated: the axes' distance less
         /// ra + rb, the witnesses pushed along the unit residual; axes that meet (to within 2^-49 of their extent, the
