@@ -32,7 +32,11 @@ namespace ProximityLib.Double
         public static DistanceResult2 Between(in Capsule2 a, in Segment2 b) => Between(b, a).Swapped();
         /// <summary>Signed closest distance between a segment and a capsule (3D) without the witness points: the Distance of <see cref="Between(in Segment3, in Capsule3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(in Segment3 a, in Capsule3 b) => Between(a, b).Distance;
+        public static double Distance(in Segment3 a, in Capsule3 b)
+        {
+            var r = DistanceCore(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b).Distance;
+        }
         /// <summary>Signed closest distance between a capsule and a segment (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double Distance(in Capsule3 a, in Segment3 b) => Distance(b, a);
@@ -97,7 +101,7 @@ namespace ProximityLib
         public static DistanceResult2 Between(Capsule2 a, Segment2 b) => Between(b, a).Swapped();
         /// <summary>Signed closest distance between a segment and a capsule (3D), computed in double, without the witness points: the Distance of <see cref="Between(Segment3, Capsule3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Segment3 a, Capsule3 b) => Between(a, b).Distance;
+        public static float Distance(Segment3 a, Capsule3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a capsule and a segment (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(Capsule3 a, Segment3 b) => Distance(b, a);

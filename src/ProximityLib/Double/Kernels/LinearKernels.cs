@@ -303,6 +303,22 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
+        /// The distance of <see cref="LinearCapsule"/>(a, 0, b0, b1, rb, false, <paramref name="solid"/>) alone, from the
+        /// same operations and with its range verdict: in 3D the Minkowski difference of the two axes is flat, so that is
+        /// the axes' distance less rb in every case (meeting axes only choose another push), or for a segment
+        /// (!<paramref name="solid"/>) the axes' distance.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double LinearCapsuleDistance(in Linear a, Vector3D b0, Vector3D b1, double rb, bool solid, out bool inRange)
+        {
+            double dist = Math.Sqrt(LinearSegment(a, b0, b1, out _, out _, out _, out inRange));
+            if (!solid) return dist;
+            double r = 0 + rb; // LinearCapsule's ra + rb
+            inRange &= r <= double.MaxValue;
+            return dist - r;
+        }
+
+        /// <summary>
         /// Whether axes [a0, a1] and [b0, b1] at distance <paramref name="dist"/> take <see cref="CapsuleCapsule"/>'s fast path
         /// in both argument orders: its reach is the largest coordinate of b0 − a0, b1 − a0, a1 − a0 in one order and of
         /// a0 − b0, a1 − b0, b1 − b0 in the other, and the largest of all five differences' magnitudes bounds both.

@@ -1,5 +1,6 @@
 // Copied from src/ProximityLib/Pairs/SegmentCapsule.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
 #nullable enable
+using System;
 using System.Runtime.CompilerServices;
 
 namespace ProximityLib.Double
@@ -15,12 +16,21 @@ namespace ProximityLib.Double
         /// <summary>Closest distance between a segment and a capsule (2D): negative when the segment enters the capsule; 2D: separated axes give their distance less the radius; crossing axes give −(radius + the crossing depth of the axes, the smallest push of one axis off the other along a face normal of their Minkowski difference), the witnesses an endpoint and its image across that face, pushed by the radius; ParameterB is the axis parameter. Algorithm: robust segment–segment distance of segment and axis (Eberly) less the radius; crossing depth by the separating-axis test over the axes' normals and directions (Gottschalk).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult2 Core(Segment2 a, Capsule2 b, out bool inRange) => Kernels.CapsuleCapsule(a.Start.To3(), a.End.To3(), 0, b.Start.To3(), b.End.To3(), b.Radius, true, out inRange).To2();
+        /// <summary>The Distance of the 3D Core, bit for bit: the segment kernel inline (LinearCapsule calls it for a segment).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static double DistanceCore(Segment3 a, Capsule3 b, out bool inRange)
+        {
+            double dist = Math.Sqrt(Kernels.SegmentSegmentInline(a.Start, a.End, b.Start, b.End, out _, out _, out inRange));
+            double r = 0 + b.Radius; // LinearCapsule's ra + rb
+            inRange &= r <= double.MaxValue;
+            return dist - r;
+        }
     }
 
     public static partial class ProximityQuery
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Segment3 a, Capsule3 b, out bool inRange) => ClosestDistance.Core(a, b, out inRange).Distance <= 0;
+        internal static bool Core(Segment3 a, Capsule3 b, out bool inRange) => ClosestDistance.DistanceCore(a, b, out inRange) <= 0;
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Segment2 a, Capsule2 b, out bool inRange) => ClosestDistance.Core(a, b, out inRange).Distance <= 0;
     }
