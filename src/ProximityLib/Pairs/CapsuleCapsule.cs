@@ -57,7 +57,13 @@ namespace ProximityLib.Double
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool Core(Capsule3 a, Capsule3 b, out bool inRange) => ClosestDistance.DistanceCore(a, b, out inRange) <= 0;
+        // Between's Distance ≤ 0, without its crossing depth where the verdict does not need it (Kernels.OverlapsByAxes).
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Capsule2 a, Capsule2 b, out bool inRange) => ClosestDistance.DistanceCore(a, b, out inRange) <= 0;
+        internal static bool Core(Capsule2 a, Capsule2 b, out bool inRange)
+        {
+            double dist = Math.Sqrt(Kernels.SegmentSegment2Inline(a.Start, a.End, b.Start, b.End, out _, out _, out inRange));
+            int verdict = Kernels.OverlapsByAxes(dist, a.Radius + b.Radius, a.Start.To3(), a.End.To3(), b.Start.To3(), b.End.To3(), ref inRange);
+            return verdict == 0 ? ClosestDistance.Core(a, b, out inRange).Distance <= 0 : verdict > 0;
+        }
     }
 }

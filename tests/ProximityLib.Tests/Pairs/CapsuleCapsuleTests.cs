@@ -116,9 +116,10 @@ namespace ProximityTests.Pairs
 
         /// <summary>
         /// The distance-only entry and Overlaps (which take the axes' distance less the radii where the axes are clear of
-        /// each other in both argument orders, and Between otherwise) against Between, bit for bit, in both orders: axes
-        /// from 2^-60 to 2^-10 of their reach apart around the near-touch threshold (2^-26 of the reach), meeting, crossing
-        /// in the plane (depth beyond the radii), identical, and at scales 2^±300.
+        /// each other in both argument orders, or within the radii, and Between otherwise) against Between, bit for bit, in
+        /// both orders: axes from 2^-60 to 2^-10 of their reach apart around the near-touch threshold (2^-26 of the reach),
+        /// meeting, crossing in the plane (depth beyond the radii), identical; radii of the reach's size or of the gap's;
+        /// at scales 2^±300.
         /// </summary>
         [Test]
         public void DistanceOnlyIsBetweenAcrossTheNearTouchBand()
@@ -135,7 +136,9 @@ namespace ProximityTests.Pairs
                 var b0 = a0 + (a1 - a0) * U(-0.2, 1.2) + V(U(-1, 1), U(-1, 1), U(-1, 1)) * gap;
                 var b1 = rng.Next(10) == 0 ? b0 : V(U(-1, 1), U(-1, 1), U(-1, 1));
                 if (rng.Next(10) == 0) { b0 = a0; b1 = a1; }
-                double ra = U(0.01, 0.5) * scale, rb = U(0.01, 0.5) * scale;
+                // Radii of the reach's size, or of the gap's (2^-70..2^-10): then the axes can be nearly touching beyond them.
+                double Radius() => (rng.Next(2) == 0 ? U(0.01, 0.5) : Math.ScaleB(U(1, 2), -rng.Next(10, 71))) * scale;
+                double ra = Radius(), rb = Radius();
                 string at = $"case {i}: ({a0}, {a1}, {ra:R}) vs ({b0}, {b1}, {rb:R}) x {scale}";
                 var c = new Capsule3(a0 * scale, a1 * scale, ra);
                 var d = new Capsule3(b0 * scale, b1 * scale, rb);

@@ -27,5 +27,9 @@ namespace ProximityTests.Pairs
 
         [Test]
         public void ScalesExactlyAndStaysFiniteOverTheDoubleRange() => LinearFamilies.CheckScaling("line", "capsule");
+
+        /// <summary>Distance and Overlaps against Between, bit for bit, across the near-touch band (<see cref="LinearFamilies.CheckOverlapsAcrossTheNearTouchBand"/>).</summary>
+        [Test]
+        public void OverlapsIsBetweenAcrossTheNearTouchBand() => LinearFamilies.CheckOverlapsAcrossTheNearTouchBand("line", 20261209);
     }
 }

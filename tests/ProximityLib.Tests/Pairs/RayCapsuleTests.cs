@@ -71,5 +71,9 @@ namespace ProximityTests.Pairs
                 }
             }
         }
+
+        /// <summary>Distance and Overlaps against Between, bit for bit, across the near-touch band (<see cref="LinearFamilies.CheckOverlapsAcrossTheNearTouchBand"/>).</summary>
+        [Test]
+        public void OverlapsIsBetweenAcrossTheNearTouchBand() => LinearFamilies.CheckOverlapsAcrossTheNearTouchBand("ray", 20261210);
     }
 }

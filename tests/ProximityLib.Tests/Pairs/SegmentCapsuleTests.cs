@@ -38,8 +38,9 @@ namespace ProximityTests.Pairs
         public void ScalesExactlyAndStaysFiniteOverTheDoubleRange() => LinearFamilies.CheckScaling("segment", "capsule");
 
         /// <summary>
-        /// The distance-only entry and Overlaps (in 3D the axes' distance less the radius from the inlined segment kernel)
-        /// against Between, bit for bit, in both orders, 3D and 2D: a segment from
+        /// The distance-only entry and Overlaps (in 3D the axes' distance less the radius from the inlined segment kernel; in
+        /// 2D Overlaps without the crossing depth where the axes are within the radius or clear of each other) against
+        /// Between, bit for bit, in both orders, 3D and 2D: a radius of the reach's size or of the gap's; a segment from
         /// 2^-60 to 2^-10 of its reach off the capsule's axis around the near-touch threshold, meeting it, crossing it,
         /// lying on it, a point segment, at scales 2^±300.
         /// </summary>
@@ -57,7 +58,8 @@ namespace ProximityTests.Pairs
                 var a0 = b0 + (b1 - b0) * U(-0.2, 1.2) + V(U(-1, 1), U(-1, 1), U(-1, 1)) * gap;
                 var a1 = rng.Next(10) == 0 ? a0 : V(U(-1, 1), U(-1, 1), U(-1, 1));
                 if (rng.Next(10) == 0) { a0 = b0; a1 = b1; }
-                double rb = U(0.01, 0.5) * scale;
+                // A radius of the reach's size, or of the gap's (2^-70..2^-10): then the axes can be nearly touching beyond it.
+                double rb = (rng.Next(2) == 0 ? U(0.01, 0.5) : Math.ScaleB(U(1, 2), -rng.Next(10, 71))) * scale;
                 string at = $"case {i}: ({a0}, {a1}) vs ({b0}, {b1}, {rb:R}) x {scale}";
                 var s3 = new Segment3(a0 * scale, a1 * scale);
                 var c3 = new Capsule3(b0 * scale, b1 * scale, rb);

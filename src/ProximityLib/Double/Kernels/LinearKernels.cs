@@ -319,6 +319,22 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
+        /// The overlap verdict of <see cref="CapsuleCapsule"/> (planar; in either argument order) from the axes' distance
+        /// <paramref name="dist"/> (the segment kernel's, the same bits in both orders) and the radii's sum r, where it
+        /// follows without the crossing depth: 1 (overlap) when dist − r ≤ 0, because Between's distance is then dist − r or,
+        /// for crossing axes, −(r + depth) &lt; 0; −1 (apart) when dist − r &gt; 0 and the axes are clear of each other
+        /// (<see cref="AxesClear"/>: Between is dist − r there); 0 otherwise, axes nearly touching beyond the radii, where
+        /// rounding may make them cross and only Between's distance tells. <paramref name="inRange"/> gains r's check.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static int OverlapsByAxes(double dist, double r, Vector3D a0, Vector3D a1, Vector3D b0, Vector3D b1, ref bool inRange)
+        {
+            inRange &= r <= double.MaxValue;
+            if (dist - r <= 0) return 1;
+            return AxesClear(dist, a0, a1, b0, b1) ? -1 : 0;
+        }
+
+        /// <summary>
         /// Whether axes [a0, a1] and [b0, b1] at distance <paramref name="dist"/> take <see cref="CapsuleCapsule"/>'s fast path
         /// in both argument orders: its reach is the largest coordinate of b0 − a0, b1 − a0, a1 − a0 in one order and of
         /// a0 − b0, a1 − b0, b1 − b0 in the other, and the largest of all five differences' magnitudes bounds both.
