@@ -26,23 +26,24 @@ namespace ProximityLib.Double
                 : Kernels.CapsuleCapsule(a.Start.To3(), a.End.To3(), a.Radius, b.Start.To3(), b.End.To3(), b.Radius, true, out inRange).To2();
         }
         /// <summary>
-        /// The Distance of <see cref="Core(Capsule3, Capsule3, out bool)"/>, bit for bit, without its witnesses: axes clear
-        /// of each other in either argument order (<see cref="Kernels.AxesClear(double, Vector3D, Vector3D, Vector3D, Vector3D)"/>)
-        /// take Core's fast path in both, whose distance is the axes' (the segment kernel's squared distance is the same
-        /// bits in either order) less ra + rb; anything else asks Core.
+        /// The Distance of <see cref="Core(Capsule3, Capsule3, out bool)"/>, bit for bit, without its witnesses: in 3D the
+        /// axes' Minkowski difference is flat, so every path of Core (the fast one, and LinearCapsule's for nearly touching
+        /// or meeting axes, which calls the same segment kernel) answers the axes' distance less ra + rb, in either
+        /// argument order (the kernel's squared distance is the same bits in both; ra + rb = rb + ra).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static double DistanceCore(Capsule3 a, Capsule3 b, out bool inRange)
         {
             double dist = Math.Sqrt(Kernels.SegmentSegmentInline(a.Start, a.End, b.Start, b.End, out _, out _, out inRange));
-            if (!Kernels.AxesClear(dist, a.Start, a.End, b.Start, b.End)) return Core(a, b, out inRange).Distance;
             double r = a.Radius + b.Radius;
             inRange &= r <= double.MaxValue;
             return dist - r;
         }
         /// <summary>
-        /// <see cref="DistanceCore(Capsule3, Capsule3, out bool)"/> in the plane: the planar segment kernel gives the lifted
-        /// one's squared distance and range verdict, bit for bit, and separated axes cannot cross (Core's crossing depth).
+        /// The Distance of <see cref="Core(Capsule2, Capsule2, out bool)"/>, bit for bit: the planar segment kernel gives the
+        /// lifted one's squared distance and range verdict, bit for bit; axes clear of each other in either argument order
+        /// (<see cref="Kernels.AxesClear(double, Vector3D, Vector3D, Vector3D, Vector3D)"/>) take Core's fast path in both,
+        /// the axes' distance less ra + rb; nearer axes may cross (Core's crossing depth), so anything else asks Core.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static double DistanceCore(Capsule2 a, Capsule2 b, out bool inRange)
