@@ -151,6 +151,11 @@ namespace ProximityApiGen
         public string Query = "", Result = "";
         public Shape A = null!, B = null!;
         public bool Guarded;
+        /// <summary>
+        /// Whether the Core takes the range its witnesses must stay in (double range): the double overloads pass
+        /// double.MaxValue, the float ones float.MaxValue, so a witness the float result cannot hold is never chosen.
+        /// </summary>
+        public bool Ranged;
         public string? Summary;
         public int Dim => A.Dim;
         public string Pair => $"{A.Noun} and {B.Noun} ({Dim}D)";
@@ -161,7 +166,7 @@ namespace ProximityApiGen
     internal static class Generator
     {
         private static readonly Regex Declaration = new Regex(
-            @"^\s*internal static (?<result>\w+) (?<name>Core|DistanceCore)\((?:in )?(?<a>\w+) a, (?:in )?(?<b>\w+) b(?<guard>, out bool inRange)?\)");
+            @"^\s*internal static (?<result>\w+) (?<name>Core|DistanceCore)\((?:in )?(?<a>\w+) a, (?:in )?(?<b>\w+) b(?<range>, double range)?(?<guard>, out bool inRange)?\)");
         private static readonly Regex Class = new Regex(@"^\s*public static partial class (?<name>\w+)");
 
         /// <summary>The contract of each public Between a pair file yields: (dimension, A, B as double type names, its summary).</summary>
@@ -197,7 +202,7 @@ namespace ProximityApiGen
             {
                 w.Doc(k.Summary!);
                 w.Inline();
-                Guarded(w, $"public static {k.Result} Between(in {k.A.Double} a, in {k.B.Double} b)", "Core", k.Guarded, "Slow(a, b)");
+                Guarded(w, $"public static {k.Result} Between(in {k.A.Double} a, in {k.B.Double} b)", "Core", k.Guarded, "Slow(a, b)", range: Range(k, "double"));
                 if (!k.SameTypes) w.Method($"Closest distance between {k.SwappedPair}: the swapped call, with PointA/PointB and parameters swapped.", $"public static {k.Result} Between(in {k.B.Double} a, in {k.A.Double} b) => Between(b, a).Swapped();");
             }
             foreach (var k in between)
@@ -213,7 +218,7 @@ namespace ProximityApiGen
             foreach (var k in between.Where(k => k.Guarded))
             {
                 w.Line("[MethodImpl(MethodImplOptions.NoInlining)]");
-                w.Line($"private static {k.Result} Slow(in {k.A.Double} a, in {k.B.Double} b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));");
+                w.Line($"private static {k.Result} Slow(in {k.A.Double} a, in {k.B.Double} b) => Wide.Between(a, b, static (x, y) => Core(x, y{Range(k, "double")}, out _));");
             }
             w.Close();
             w.Line();
@@ -242,7 +247,7 @@ namespace ProximityApiGen
             w.Open("public static partial class ClosestDistance");
             foreach (var k in between)
             {
-                w.Method(FloatSummary(k), $"public static {k.Result} Between({k.A.Float} a, {k.B.Float} b) => new {k.Result}(Dbl.ClosestDistance.Core({Args(k)}));");
+                w.Method(FloatSummary(k), $"public static {k.Result} Between({k.A.Float} a, {k.B.Float} b) => new {k.Result}(Dbl.ClosestDistance.Core({Args(k, Range(k, "float"))}));");
                 if (!k.SameTypes) w.Method($"Closest distance between {k.SwappedPair}: the swapped call, with PointA/PointB and parameters swapped.", $"public static {k.Result} Between({k.B.Float} a, {k.A.Float} b) => Between(b, a).Swapped();");
             }
             foreach (var k in between)
@@ -267,7 +272,10 @@ namespace ProximityApiGen
             return w.ToString();
         }
 
-        private static string Args(Kernel k) => $"{k.A.FromFloat("a")}, {k.B.FromFloat("b")}" + (k.Guarded ? ", out _" : "");
+        private static string Args(Kernel k, string range = "") => $"{k.A.FromFloat("a")}, {k.B.FromFloat("b")}{range}" + (k.Guarded ? ", out _" : "");
+
+        /// <summary>The range argument of a <see cref="Kernel.Ranged"/> Core for the precision's API ("double" or "float"), else nothing.</summary>
+        private static string Range(Kernel k, string precision) => k.Ranged ? $", {precision}.MaxValue" : "";
 
         /// <summary>The double summary for the float overload: "computed in double", without the algorithm sentence.</summary>
         private static string FloatSummary(Kernel k)
@@ -279,11 +287,11 @@ namespace ProximityApiGen
             return head + ", computed in double" + s.Substring(head.Length);
         }
 
-        private static void Guarded(Writer w, string signature, string core, bool guarded, string slow, bool scalar = false)
+        private static void Guarded(Writer w, string signature, string core, bool guarded, string slow, bool scalar = false, string range = "")
         {
-            if (!guarded) { w.Line($"{signature} => {core}(a, b);"); return; }
+            if (!guarded) { w.Line($"{signature} => {core}(a, b{range});"); return; }
             w.Open(signature);
-            w.Line($"var r = {core}(a, b, out bool inRange);");
+            w.Line($"var r = {core}(a, b{range}, out bool inRange);");
             if (scalar) { w.Line($"return inRange ? r : {slow};"); w.Close(); return; }
             // A struct result is not chosen by `inRange ? r : slow`: without dynamic PGO that form copies the kernel's
             // result, written by a call the JIT did not inline, into a second temporary with one wide load that cannot
@@ -318,7 +326,8 @@ namespace ProximityApiGen
                     "ProximityQuery" when name == "Core" && result == "bool" => "Overlaps",
                     _ => throw new FormatException($"{fileName}:{i + 1}: {cls}.{name} returning {result} is not a kernel the generator knows"),
                 };
-                var k = new Kernel { Query = query, Result = result, A = a, B = b, Guarded = m.Groups["guard"].Success, Summary = SummaryAbove(lines, i) };
+                var k = new Kernel { Query = query, Result = result, A = a, B = b, Guarded = m.Groups["guard"].Success, Ranged = m.Groups["range"].Success, Summary = SummaryAbove(lines, i) };
+                if (k.Ranged && query != "Between") throw new FormatException($"{fileName}:{i + 1}: only a ClosestDistance.Core may take a range");
                 if (query == "Between")
                 {
                     string head = $"Closest distance between {k.Pair}: ";

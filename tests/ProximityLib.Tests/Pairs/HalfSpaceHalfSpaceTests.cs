@@ -75,5 +75,31 @@ namespace ProximityTests.Pairs
             });
             TestContext.Out.WriteLine($"HalfSpaceHalfSpace worst E = {worst:F3}");
         }
+    
+
+        /// <summary>
+        /// Float half-planes ~2e37 from the origin with nearly opposite normals, each stored point outside the other:
+        /// their boundaries meet beyond float's range (found by the long fuzz, seed 2028), where the float result turned
+        /// the meeting point into ±∞ witnesses. The float API now answers −∞ with the midpoint of the stored points,
+        /// finite, in both argument orders; the double API keeps the meeting point (finite in double).
+        /// </summary>
+        [Test]
+        public void FloatMeetingPointBeyondFloatRangeFallsBackToTheMidpoint()
+        {
+            var pa = new Num.Vector2(2.293306E+37f, 2.3358516E+37f);
+            var pb = new Num.Vector2(-5.835599E+35f, 2.4765464E+37f);
+            var a = Flt.HalfPlane.FromPointNormal(pa, new Num.Vector2(-0.03906698f, -0.013954299f));
+            var b = Flt.HalfPlane.FromPointNormal(pb, new Num.Vector2(0.39249292f, 0.13384941f));
+            var mid = new Num.Vector2((float)(pa.X * 0.5 + pb.X * 0.5), (float)(pa.Y * 0.5 + pb.Y * 0.5));
+            foreach (var r in new[] { Flt.ClosestDistance.Between(a, b), Flt.ClosestDistance.Between(b, a) })
+            {
+                Assert.That(r.Distance, Is.EqualTo(float.NegativeInfinity));
+                Assert.That(r.PointA, Is.EqualTo(mid));
+                Assert.That(r.PointB, Is.EqualTo(mid));
+            }
+            var d = ClosestDistance.Between(a.Inner, b.Inner);
+            Assert.That(double.IsNegativeInfinity(d.Distance) && d.PointA.IsFinite && d.PointA == d.PointB, Is.True, d.ToString());
+            Assert.That(Math.Max(Math.Abs(d.PointA.X), Math.Abs(d.PointA.Y)), Is.GreaterThan(float.MaxValue), "the double API's meeting point lies beyond float's range");
+        }
     }
 }

@@ -10,19 +10,19 @@ namespace ProximityLib.Double
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a half-space and a half-space (3D): exactly opposite normals: the signed gap a.Normal·(b.Point − a.Point) between the parallel boundaries, negative when they overlap (minus the depth), witnessed by the feet on the two boundaries of the midpoint of the stored points. Any other normals: the intersection is unbounded, Distance = −∞ (DistanceSquared 0) and both witnesses are one common point: the midpoint of the stored points when each lies in the other half-space, else the stored point that lies in the other, else a point of both near where the boundaries meet (the midpoint, should that lie beyond the double range). Symmetric: swapping the arguments swaps the witnesses bit for bit. Algorithm: dot products from the stored points; the boundaries' meeting point in a basis built on the accurately formed cross product of the normals (well conditioned however nearly parallel they are), moved inward past its rounding.</summary>
+        /// <summary>Closest distance between a half-space and a half-space (3D): exactly opposite normals: the signed gap a.Normal·(b.Point − a.Point) between the parallel boundaries, negative when they overlap (minus the depth), witnessed by the feet on the two boundaries of the midpoint of the stored points. Any other normals: the intersection is unbounded, Distance = −∞ (DistanceSquared 0) and both witnesses are one common point: the midpoint of the stored points when each lies in the other half-space, else the stored point that lies in the other, else a point of both near where the boundaries meet (the midpoint, should that lie beyond the range of the API's precision: float's for the float API). Symmetric: swapping the arguments swaps the witnesses bit for bit. Algorithm: dot products from the stored points; the boundaries' meeting point in a basis built on the accurately formed cross product of the normals (well conditioned however nearly parallel they are), moved inward past its rounding.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(in HalfSpace a, in HalfSpace b)
         {
-            var r = Core(a, b, out bool inRange);
+            var r = Core(a, b, double.MaxValue, out bool inRange);
             if (!inRange) r = Slow(a, b);
             return r;
         }
-        /// <summary>Closest distance between a half-plane and a half-plane (2D): exactly opposite normals: the signed gap a.Normal·(b.Point − a.Point) between the parallel boundaries, negative when they overlap (minus the depth), witnessed by the feet on the two boundaries of the midpoint of the stored points. Any other normals: the intersection is unbounded, Distance = −∞ (DistanceSquared 0) and both witnesses are one common point: the midpoint of the stored points when each lies in the other half-plane, else the stored point that lies in the other, else a point of both near where the boundaries meet (the midpoint, should that lie beyond the double range). Symmetric: swapping the arguments swaps the witnesses bit for bit. Algorithm: dot products from the stored points; the boundaries' meeting point in a basis built on the accurately formed cross product of the normals (well conditioned however nearly parallel they are), moved inward past its rounding.</summary>
+        /// <summary>Closest distance between a half-plane and a half-plane (2D): exactly opposite normals: the signed gap a.Normal·(b.Point − a.Point) between the parallel boundaries, negative when they overlap (minus the depth), witnessed by the feet on the two boundaries of the midpoint of the stored points. Any other normals: the intersection is unbounded, Distance = −∞ (DistanceSquared 0) and both witnesses are one common point: the midpoint of the stored points when each lies in the other half-plane, else the stored point that lies in the other, else a point of both near where the boundaries meet (the midpoint, should that lie beyond the range of the API's precision: float's for the float API). Symmetric: swapping the arguments swaps the witnesses bit for bit. Algorithm: dot products from the stored points; the boundaries' meeting point in a basis built on the accurately formed cross product of the normals (well conditioned however nearly parallel they are), moved inward past its rounding.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(in HalfPlane a, in HalfPlane b)
         {
-            var r = Core(a, b, out bool inRange);
+            var r = Core(a, b, double.MaxValue, out bool inRange);
             if (!inRange) r = Slow(a, b);
             return r;
         }
@@ -42,9 +42,9 @@ namespace ProximityLib.Double
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(in HalfSpace a, in HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in HalfSpace a, in HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, double.MaxValue, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(in HalfPlane a, in HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in HalfPlane a, in HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, double.MaxValue, out _));
     }
 
     public static partial class ProximityQuery
@@ -75,12 +75,12 @@ namespace ProximityLib
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a half-space and a half-space (3D), computed in double: exactly opposite normals: the signed gap a.Normal·(b.Point − a.Point) between the parallel boundaries, negative when they overlap (minus the depth), witnessed by the feet on the two boundaries of the midpoint of the stored points. Any other normals: the intersection is unbounded, Distance = −∞ (DistanceSquared 0) and both witnesses are one common point: the midpoint of the stored points when each lies in the other half-space, else the stored point that lies in the other, else a point of both near where the boundaries meet (the midpoint, should that lie beyond the double range). Symmetric: swapping the arguments swaps the witnesses bit for bit.</summary>
+        /// <summary>Closest distance between a half-space and a half-space (3D), computed in double: exactly opposite normals: the signed gap a.Normal·(b.Point − a.Point) between the parallel boundaries, negative when they overlap (minus the depth), witnessed by the feet on the two boundaries of the midpoint of the stored points. Any other normals: the intersection is unbounded, Distance = −∞ (DistanceSquared 0) and both witnesses are one common point: the midpoint of the stored points when each lies in the other half-space, else the stored point that lies in the other, else a point of both near where the boundaries meet (the midpoint, should that lie beyond the range of the API's precision: float's for the float API). Symmetric: swapping the arguments swaps the witnesses bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(HalfSpace a, HalfSpace b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
-        /// <summary>Closest distance between a half-plane and a half-plane (2D), computed in double: exactly opposite normals: the signed gap a.Normal·(b.Point − a.Point) between the parallel boundaries, negative when they overlap (minus the depth), witnessed by the feet on the two boundaries of the midpoint of the stored points. Any other normals: the intersection is unbounded, Distance = −∞ (DistanceSquared 0) and both witnesses are one common point: the midpoint of the stored points when each lies in the other half-plane, else the stored point that lies in the other, else a point of both near where the boundaries meet (the midpoint, should that lie beyond the double range). Symmetric: swapping the arguments swaps the witnesses bit for bit.</summary>
+        public static DistanceResult3 Between(HalfSpace a, HalfSpace b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, float.MaxValue, out _));
+        /// <summary>Closest distance between a half-plane and a half-plane (2D), computed in double: exactly opposite normals: the signed gap a.Normal·(b.Point − a.Point) between the parallel boundaries, negative when they overlap (minus the depth), witnessed by the feet on the two boundaries of the midpoint of the stored points. Any other normals: the intersection is unbounded, Distance = −∞ (DistanceSquared 0) and both witnesses are one common point: the midpoint of the stored points when each lies in the other half-plane, else the stored point that lies in the other, else a point of both near where the boundaries meet (the midpoint, should that lie beyond the range of the API's precision: float's for the float API). Symmetric: swapping the arguments swaps the witnesses bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(HalfPlane a, HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, float.MaxValue, out _));
         /// <summary>Signed closest distance between a half-space and a half-space (3D), computed in double, without the witness points: the Distance of <see cref="Between(HalfSpace, HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(HalfSpace a, HalfSpace b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);

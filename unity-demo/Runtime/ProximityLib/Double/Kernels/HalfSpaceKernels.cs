@@ -193,11 +193,12 @@ namespace ProximityLib.Double
         /// witnessed by the feet on both boundaries of the midpoint of the stored points. Otherwise the intersection is
         /// unbounded: −∞, with a common point: the midpoint of the stored points if each lies in the other half-space, else
         /// the stored point that does, else a point of both near where the boundaries meet (<see cref="BoundaryMeet"/>;
-        /// should that lie beyond the double range, the midpoint). Inlined: without dynamic PGO the JIT kept it a call,
+        /// should that lie beyond <paramref name="range"/>, the midpoint: the float API passes float.MaxValue, as its
+        /// result could not hold the point, the double one double.MaxValue). Inlined: without dynamic PGO the JIT kept it a call,
         /// and copying the shapes into its arguments and reading back its result stalled (3D Between 22 → 7 ns).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 HalfSpaceHalfSpace(Vector3D na, Vector3D pa, Vector3D nb, Vector3D pb, out bool inRange)
+        public static DistanceResult3 HalfSpaceHalfSpace(Vector3D na, Vector3D pa, Vector3D nb, Vector3D pb, double range, out bool inRange)
         {
             inRange = Range.Box(Range.MaxAbs(pb - pa));
             // Halves first: pa + pb can overflow. Addition commutes, so either order gives this midpoint.
@@ -215,7 +216,7 @@ namespace ProximityLib.Double
             if (aInB && bInA) common = m;
             else if (aInB) common = pa;
             else if (bInA) common = pb;
-            else common = BoundaryMeet(na, pa, nb, pb, m);
+            else common = BoundaryMeet(na, pa, nb, pb, m, range);
             return new DistanceResult3(double.NegativeInfinity, 0, common, common, 0, 0);
         }
 
@@ -228,10 +229,10 @@ namespace ProximityLib.Double
         /// relative precision however small it is, and so does every coefficient built from it. L is scaled by a power of
         /// two so |L|² neither underflows nor overflows. The arguments are taken in a canonical order
         /// (<see cref="Order.Swap(Vector3D, Vector3D, Vector3D, Vector3D)"/>), so swapping them gives the same point bit
-        /// for bit; m when the point is not finite.
+        /// for bit; m when the point is not finite or lies beyond <paramref name="range"/> (in magnitude).
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static Vector3D BoundaryMeet(Vector3D na, Vector3D pa, Vector3D nb, Vector3D pb, Vector3D m)
+        private static Vector3D BoundaryMeet(Vector3D na, Vector3D pa, Vector3D nb, Vector3D pb, Vector3D m, double range)
         {
             if (Order.Swap(na, pa, nb, pb)) { var n = na; na = nb; nb = n; var p = pa; pa = pb; pb = p; }
             var l = AccurateCross(na, nb);
@@ -244,16 +245,20 @@ namespace ProximityLib.Double
             double alpha = ea / na.LengthSquared;
             // q = L × na at scale k: x − m = α·na + q·(eb − α·c)/|L|², the /k folded into the factor.
             var x = m + (na * alpha + Vector3D.Cross(l, na) * ((eb - alpha * Vector3D.Dot(na, nb)) / l2 * k));
-            if (!(double.IsFinite(x.X) && double.IsFinite(x.Y) && double.IsFinite(x.Z))) return m;
+            if (!Within(x, range)) return m;
             double high = Math.Max(Vector3D.Dot(na, x - pa), Vector3D.Dot(nb, x - pb));
             if (high > 0)
             {
                 // −L × (na − nb) at scale k lowers each height at the rate |L|²/k.
                 var inside = x - Vector3D.Cross(l, na - nb) * (2 * high / l2 * k);
-                if (double.IsFinite(inside.X) && double.IsFinite(inside.Y) && double.IsFinite(inside.Z)) x = inside;
+                if (Within(inside, range)) x = inside;
             }
             return x;
         }
+
+        /// <summary>Whether every coordinate of v is at most <paramref name="range"/> in magnitude (false for NaN and ±∞).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool Within(Vector3D v, double range) => Math.Abs(v.X) <= range && Math.Abs(v.Y) <= range && Math.Abs(v.Z) <= range;
 
         /// <summary>The distance of <see cref="HalfSpaceHalfSpace"/> alone (the same operations and <paramref name="inRange"/>).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
