@@ -360,8 +360,32 @@ namespace ProximityReference.Fuzz
             var pb = DyVec.From(r.PB);
             var m = Dy.Max(Dy.Max(_ca.Magnitude(), _cb.Magnitude()), Dy.Max(MaxAbs(pa), MaxAbs(pb)));
             var tolW = _unit * (8 * _bound) + _u * m * 16;
-            CheckWitnesses(r, first, second, call, pa, pb, tolW, $"tolerance 8·{_bound}·U + 16·u·M = {tolW.ToDouble():G4}", code);
+            if (!MidpointFallback(pa, first, second))
+                CheckWitnesses(r, first, second, call, pa, pb, tolW, $"tolerance 8·{_bound}·U + 16·u·M = {tolW.ToDouble():G4}", code);
             return true;
+        }
+
+        /// <summary>
+        /// The contract's fallback for two half-spaces whose boundaries meet beyond the precision's range (docs/pairs.md):
+        /// the witness w is the midpoint of the stored points (to the precision's rounding), and the exact meeting point,
+        /// the point of both boundaries nearest that midpoint, lies beyond float's or double's largest value (to 2^-20
+        /// relative: the library decides on its rounded point). No point of such half-spaces may then be representable,
+        /// so the witness cannot lie in both. With G the normals' Gram matrix, x = m + [na nb]·G⁻¹·r, so det(G)·x is
+        /// formed exactly without a division.
+        /// </summary>
+        private bool MidpointFallback(DyVec w, Core first, Core second)
+        {
+            if (first.Kind != Kind.HalfSpace || second.Kind != Kind.HalfSpace) return false;
+            DyVec pa = DyVec.From(first.P), na = DyVec.From(first.Q), pb = DyVec.From(second.P), nb = DyVec.From(second.Q);
+            var mid = (pa + pb) * Dy.Pow2(-1);
+            for (int i = 0; i < 3; i++)
+                if (Dy.Abs(w[i] - mid[i]) > Dy.Abs(mid[i]) * _u * 2 + Dy.Pow2(_float ? -149 : -1074)) return false;
+            Dy aa = DyVec.Dot(na, na), ab = DyVec.Dot(na, nb), bb = DyVec.Dot(nb, nb), det = aa * bb - ab * ab;
+            if (det.Sign <= 0) return false;
+            Dy ra = DyVec.Dot(na, pa - mid), rb = DyVec.Dot(nb, pb - mid);
+            var xdet = mid * det + na * (bb * ra - ab * rb) + nb * (aa * rb - ab * ra);
+            var limit = (Dy)(_float ? float.MaxValue : double.MaxValue) * det * (Dy)(1 - Math.Pow(2, -20));
+            return Dy.Abs(xdet.X) > limit || Dy.Abs(xdet.Y) > limit || Dy.Abs(xdet.Z) > limit;
         }
 
         private static Dy MaxAbs(DyVec v) => Dy.Max(Dy.Abs(v.X), Dy.Max(Dy.Abs(v.Y), Dy.Abs(v.Z)));
@@ -548,8 +572,17 @@ namespace ProximityReference.Fuzz
             if (double.IsNegativeInfinity(ab.D) != double.IsNegativeInfinity(r2.D)) diffs.Add($"Distance: {N(r2.D)} instead of {N(ab.D)}");
             Same("Distance", ab.D, r2.D, k);
             Same("DistanceSquared", ab.D2, r2.D2, 2 * k);
-            Same("PointA.X", ab.PA.X, r2.PA.X, k); Same("PointA.Y", ab.PA.Y, r2.PA.Y, k); Same("PointA.Z", ab.PA.Z, r2.PA.Z, k);
-            Same("PointB.X", ab.PB.X, r2.PB.X, k); Same("PointB.Y", ab.PB.Y, r2.PB.Y, k); Same("PointB.Z", ab.PB.Z, r2.PB.Z, k);
+            // Two half-spaces' common point falls back to the midpoint of the stored points where their boundaries meet beyond
+            // the precision's range (MidpointFallback): a scaling that moves the meeting point across the range's end
+            // switches between the two, so the witnesses are compared only where neither side is, or must be, the fallback.
+            double max = _float ? float.MaxValue : double.MaxValue;
+            bool Fits(Vector3D p) => Math.Abs(Math.ScaleB(p.X, k)) <= max && Math.Abs(Math.ScaleB(p.Y, k)) <= max && Math.Abs(Math.ScaleB(p.Z, k)) <= max;
+            if (!(double.IsNegativeInfinity(ab.D) && _ca.Kind == Kind.HalfSpace && _cb.Kind == Kind.HalfSpace
+                  && (MidpointFallback(DyVec.From(ab.PA), _ca, _cb) || !Fits(ab.PA))))
+            {
+                Same("PointA.X", ab.PA.X, r2.PA.X, k); Same("PointA.Y", ab.PA.Y, r2.PA.Y, k); Same("PointA.Z", ab.PA.Z, r2.PA.Z, k);
+                Same("PointB.X", ab.PB.X, r2.PB.X, k); Same("PointB.Y", ab.PB.Y, r2.PB.Y, k); Same("PointB.Z", ab.PB.Z, r2.PB.Z, k);
+            }
             // A line's or ray's parameter is a length along its unit direction (scales); the others are fractions (do not).
             bool linA = Kinds.IsLinear(_c.A.Kind), linB = Kinds.IsLinear(_c.B.Kind);
             if (linA) Same("ParameterA", ab.TA, r2.TA, k);
