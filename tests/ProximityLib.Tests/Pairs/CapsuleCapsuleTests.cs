@@ -115,48 +115,12 @@ namespace ProximityTests.Pairs
     
 
         /// <summary>
-        /// The distance-only entry and Overlaps (which take the axes' distance less the radii where the axes are clear of
-        /// each other in both argument orders, or within the radii, and Between otherwise) against Between, bit for bit, in
-        /// both orders: axes from 2^-60 to 2^-10 of their reach apart around the near-touch threshold (2^-26 of the reach),
-        /// meeting, crossing in the plane (depth beyond the radii), identical; radii of the reach's size or of the gap's;
-        /// at scales 2^±300.
+        /// Distance and Overlaps (the axes' distance less the radii where the axes are clear of each other in both argument
+        /// orders, in 3D always; 2D Overlaps also where the axes lie within the radii) against Between, bit for bit, across the
+        /// near-touch band
+        /// (<see cref="LinearFamilies.CheckAgainstBetweenAcrossTheNearTouchBand"/>).
         /// </summary>
         [Test]
-        public void DistanceOnlyIsBetweenAcrossTheNearTouchBand()
-        {
-            var rng = new Random(20261207);
-            double U(double lo, double hi) => lo + (hi - lo) * rng.NextDouble();
-            for (int i = 0; i < 20000; i++)
-            {
-                double scale = Math.ScaleB(1, rng.Next(3) switch { 0 => 0, 1 => -300, _ => 300 });
-                var a0 = V(U(-1, 1), U(-1, 1), U(-1, 1));
-                var a1 = V(U(-1, 1), U(-1, 1), U(-1, 1));
-                // B starts on A's axis, pushed off it by a gap of 2^-60..2^-10 (or 0), and leaves in a random direction.
-                double gap = rng.Next(5) == 0 ? 0 : Math.ScaleB(U(1, 2), -rng.Next(10, 61));
-                var b0 = a0 + (a1 - a0) * U(-0.2, 1.2) + V(U(-1, 1), U(-1, 1), U(-1, 1)) * gap;
-                var b1 = rng.Next(10) == 0 ? b0 : V(U(-1, 1), U(-1, 1), U(-1, 1));
-                if (rng.Next(10) == 0) { b0 = a0; b1 = a1; }
-                // Radii of the reach's size, or of the gap's (2^-70..2^-10): then the axes can be nearly touching beyond them.
-                double Radius() => (rng.Next(2) == 0 ? U(0.01, 0.5) : Math.ScaleB(U(1, 2), -rng.Next(10, 71))) * scale;
-                double ra = Radius(), rb = Radius();
-                string at = $"case {i}: ({a0}, {a1}, {ra:R}) vs ({b0}, {b1}, {rb:R}) x {scale}";
-                var c = new Capsule3(a0 * scale, a1 * scale, ra);
-                var d = new Capsule3(b0 * scale, b1 * scale, rb);
-                var e = new Capsule2(V(a0.X, a0.Y) * scale, V(a1.X, a1.Y) * scale, ra);
-                var f = new Capsule2(V(b0.X, b0.Y) * scale, V(b1.X, b1.Y) * scale, rb);
-                foreach (var (x, y) in new[] { (c, d), (d, c) })
-                {
-                    double between = ClosestDistance.Between(x, y).Distance;
-                    Assert.That(BitConverter.DoubleToInt64Bits(ClosestDistance.Distance(x, y)), Is.EqualTo(BitConverter.DoubleToInt64Bits(between)), "3D " + at);
-                    Assert.That(ProximityQuery.Overlaps(x, y), Is.EqualTo(between <= 0), "3D Overlaps, " + at);
-                }
-                foreach (var (x, y) in new[] { (e, f), (f, e) })
-                {
-                    double between = ClosestDistance.Between(x, y).Distance;
-                    Assert.That(BitConverter.DoubleToInt64Bits(ClosestDistance.Distance(x, y)), Is.EqualTo(BitConverter.DoubleToInt64Bits(between)), "2D " + at);
-                    Assert.That(ProximityQuery.Overlaps(x, y), Is.EqualTo(between <= 0), "2D Overlaps, " + at);
-                }
-            }
-        }
+        public void DistanceOnlyIsBetweenAcrossTheNearTouchBand() => LinearFamilies.CheckAgainstBetweenAcrossTheNearTouchBand("capsule", 20261207);
     }
 }

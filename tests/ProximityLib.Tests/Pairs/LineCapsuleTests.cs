@@ -28,8 +28,8 @@ namespace ProximityTests.Pairs
         [Test]
         public void ScalesExactlyAndStaysFiniteOverTheDoubleRange() => LinearFamilies.CheckScaling("line", "capsule");
 
-        /// <summary>Distance and Overlaps against Between, bit for bit, across the near-touch band (<see cref="LinearFamilies.CheckOverlapsAcrossTheNearTouchBand"/>).</summary>
+        /// <summary>Distance and Overlaps against Between, bit for bit, across the near-touch band (<see cref="LinearFamilies.CheckAgainstBetweenAcrossTheNearTouchBand"/>).</summary>
         [Test]
-        public void OverlapsIsBetweenAcrossTheNearTouchBand() => LinearFamilies.CheckOverlapsAcrossTheNearTouchBand("line", 20261209);
+        public void OverlapsIsBetweenAcrossTheNearTouchBand() => LinearFamilies.CheckAgainstBetweenAcrossTheNearTouchBand("line", 20261209);
     }
 }

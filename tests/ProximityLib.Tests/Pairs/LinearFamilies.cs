@@ -158,31 +158,38 @@ namespace ProximityTests.Pairs
         }
 
         /// <summary>
-        /// Distance and Overlaps against Between, bit for bit, in both orders, 2D and 3D, for a line or ray (kind) against a
-        /// capsule: its origin 2^-60..2^-10 of the reach off the capsule's axis (or on it), the radius of the reach's size or
-        /// of the gap's, so the axes cross, meet, nearly touch beyond the radius or lie within it; at scales 2^±300.
+        /// Distance and Overlaps against Between, bit for bit, in both argument orders, 2D and 3D, for a segment, line, ray
+        /// or capsule (kindA) against a capsule: A starts 2^-60..2^-10 of the reach off the capsule's axis (or on it) around
+        /// the near-touch threshold (2^-26 of the reach) and leaves in a random direction; one case in ten A is the
+        /// capsule's own axis, and for a segment or capsule one in ten a point. Radii of the reach's size or of the gap's
+        /// (2^-70..2^-10), so the axes cross, meet, lie within the radii or nearly touch beyond them; scales 1, 2^±300.
         /// </summary>
-        public static void CheckOverlapsAcrossTheNearTouchBand(string kind, int seed)
+        public static void CheckAgainstBetweenAcrossTheNearTouchBand(string kindA, int seed)
         {
             var rng = new Random(seed);
             double U(double lo, double hi) => lo + (hi - lo) * rng.NextDouble();
+            Vector3D R() => new Vector3D(U(-1, 1), U(-1, 1), U(-1, 1));
+            double Radius(double scale) => (rng.Next(2) == 0 ? U(0.01, 0.5) : Math.ScaleB(U(1, 2), -rng.Next(10, 71))) * scale;
+            bool pointOk = kindA == "segment" || kindA == "capsule";
             for (int i = 0; i < 20000; i++)
             {
                 double scale = Math.ScaleB(1, rng.Next(3) switch { 0 => 0, 1 => -300, _ => 300 });
-                var b0 = new Vector3D(U(-1, 1), U(-1, 1), U(-1, 1));
-                var b1 = new Vector3D(U(-1, 1), U(-1, 1), U(-1, 1));
+                var b0 = R();
+                var b1 = R();
                 double gap = rng.Next(5) == 0 ? 0 : Math.ScaleB(U(1, 2), -rng.Next(10, 61));
-                var p = b0 + (b1 - b0) * U(-0.2, 1.2) + new Vector3D(U(-1, 1), U(-1, 1), U(-1, 1)) * gap;
-                var q = new Vector3D(U(-1, 1), U(-1, 1), U(-1, 1));
-                double rb = (rng.Next(2) == 0 ? U(0.01, 0.5) : Math.ScaleB(U(1, 2), -rng.Next(10, 71))) * scale;
+                var p = b0 + (b1 - b0) * U(-0.2, 1.2) + R() * gap;
+                var q = pointOk && rng.Next(10) == 0 ? p : R();
+                if (rng.Next(10) == 0) { p = b0; q = b1; }
+                double ra = Radius(scale), rb = Radius(scale);
                 for (int dim = 2; dim <= 3; dim++)
                 {
-                    dynamic a = Make(kind, dim, p * scale, q * scale, 0), b = Make("capsule", dim, b0 * scale, b1 * scale, rb);
+                    dynamic a = Make(kindA, dim, p * scale, q * scale, ra), b = Make("capsule", dim, b0 * scale, b1 * scale, rb);
                     string at = $"case {i}, {dim}D: {a} vs {b}";
-                    double between = Api.Between(a, b).Distance;
-                    Assert.That(BitConverter.DoubleToInt64Bits((double)Api.Distance(a, b)), Is.EqualTo(BitConverter.DoubleToInt64Bits(between)), "Distance, " + at);
-                    Assert.That((bool)Api.Overlaps(a, b), Is.EqualTo(between <= 0), "Overlaps, " + at);
-                    Assert.That((bool)Api.Overlaps(b, a), Is.EqualTo(between <= 0), "Overlaps swapped, " + at);
+                    double ab = Api.Between(a, b).Distance, ba = Api.Between(b, a).Distance;
+                    Assert.That(BitConverter.DoubleToInt64Bits((double)Api.Distance(a, b)), Is.EqualTo(BitConverter.DoubleToInt64Bits(ab)), "Distance, " + at);
+                    Assert.That(BitConverter.DoubleToInt64Bits((double)Api.Distance(b, a)), Is.EqualTo(BitConverter.DoubleToInt64Bits(ba)), "Distance swapped, " + at);
+                    Assert.That((bool)Api.Overlaps(a, b), Is.EqualTo(ab <= 0), "Overlaps, " + at);
+                    Assert.That((bool)Api.Overlaps(b, a), Is.EqualTo(ba <= 0), "Overlaps swapped, " + at);
                 }
             }
         }

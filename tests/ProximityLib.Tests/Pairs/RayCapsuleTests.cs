@@ -72,8 +72,8 @@ namespace ProximityTests.Pairs
             }
         }
 
-        /// <summary>Distance and Overlaps against Between, bit for bit, across the near-touch band (<see cref="LinearFamilies.CheckOverlapsAcrossTheNearTouchBand"/>).</summary>
+        /// <summary>Distance and Overlaps against Between, bit for bit, across the near-touch band (<see cref="LinearFamilies.CheckAgainstBetweenAcrossTheNearTouchBand"/>).</summary>
         [Test]
-        public void OverlapsIsBetweenAcrossTheNearTouchBand() => LinearFamilies.CheckOverlapsAcrossTheNearTouchBand("ray", 20261210);
+        public void OverlapsIsBetweenAcrossTheNearTouchBand() => LinearFamilies.CheckAgainstBetweenAcrossTheNearTouchBand("ray", 20261210);
     }
 }

@@ -38,42 +38,11 @@ namespace ProximityTests.Pairs
         public void ScalesExactlyAndStaysFiniteOverTheDoubleRange() => LinearFamilies.CheckScaling("segment", "capsule");
 
         /// <summary>
-        /// The distance-only entry and Overlaps (in 3D the axes' distance less the radius from the inlined segment kernel; in
-        /// 2D Overlaps without the crossing depth where the axes are within the radius or clear of each other) against
-        /// Between, bit for bit, in both orders, 3D and 2D: a radius of the reach's size or of the gap's; a segment from
-        /// 2^-60 to 2^-10 of its reach off the capsule's axis around the near-touch threshold, meeting it, crossing it,
-        /// lying on it, a point segment, at scales 2^±300.
+        /// Distance and Overlaps (in 3D the axes' distance less the radius; 2D Overlaps without the crossing depth where the
+        /// axes lie within the radius or clear of each other) against Between, bit for bit, across the near-touch band
+        /// (<see cref="LinearFamilies.CheckAgainstBetweenAcrossTheNearTouchBand"/>).
         /// </summary>
         [Test]
-        public void DistanceOnlyIsBetweenAcrossTheNearTouchBand()
-        {
-            var rng = new Random(20261208);
-            double U(double lo, double hi) => lo + (hi - lo) * rng.NextDouble();
-            for (int i = 0; i < 20000; i++)
-            {
-                double scale = Math.ScaleB(1, rng.Next(3) switch { 0 => 0, 1 => -300, _ => 300 });
-                var b0 = V(U(-1, 1), U(-1, 1), U(-1, 1));
-                var b1 = V(U(-1, 1), U(-1, 1), U(-1, 1));
-                double gap = rng.Next(5) == 0 ? 0 : Math.ScaleB(U(1, 2), -rng.Next(10, 61));
-                var a0 = b0 + (b1 - b0) * U(-0.2, 1.2) + V(U(-1, 1), U(-1, 1), U(-1, 1)) * gap;
-                var a1 = rng.Next(10) == 0 ? a0 : V(U(-1, 1), U(-1, 1), U(-1, 1));
-                if (rng.Next(10) == 0) { a0 = b0; a1 = b1; }
-                // A radius of the reach's size, or of the gap's (2^-70..2^-10): then the axes can be nearly touching beyond it.
-                double rb = (rng.Next(2) == 0 ? U(0.01, 0.5) : Math.ScaleB(U(1, 2), -rng.Next(10, 71))) * scale;
-                string at = $"case {i}: ({a0}, {a1}) vs ({b0}, {b1}, {rb:R}) x {scale}";
-                var s3 = new Segment3(a0 * scale, a1 * scale);
-                var c3 = new Capsule3(b0 * scale, b1 * scale, rb);
-                var s2 = new Segment2(V(a0.X, a0.Y) * scale, V(a1.X, a1.Y) * scale);
-                var c2 = new Capsule2(V(b0.X, b0.Y) * scale, V(b1.X, b1.Y) * scale, rb);
-                double between = ClosestDistance.Between(s3, c3).Distance;
-                Assert.That(BitConverter.DoubleToInt64Bits(ClosestDistance.Distance(s3, c3)), Is.EqualTo(BitConverter.DoubleToInt64Bits(between)), "3D " + at);
-                Assert.That(BitConverter.DoubleToInt64Bits(ClosestDistance.Distance(c3, s3)), Is.EqualTo(BitConverter.DoubleToInt64Bits(ClosestDistance.Between(c3, s3).Distance)), "3D swapped, " + at);
-                Assert.That(ProximityQuery.Overlaps(s3, c3), Is.EqualTo(between <= 0), "3D Overlaps, " + at);
-                between = ClosestDistance.Between(s2, c2).Distance;
-                Assert.That(BitConverter.DoubleToInt64Bits(ClosestDistance.Distance(s2, c2)), Is.EqualTo(BitConverter.DoubleToInt64Bits(between)), "2D " + at);
-                Assert.That(BitConverter.DoubleToInt64Bits(ClosestDistance.Distance(c2, s2)), Is.EqualTo(BitConverter.DoubleToInt64Bits(ClosestDistance.Between(c2, s2).Distance)), "2D swapped, " + at);
-                Assert.That(ProximityQuery.Overlaps(s2, c2), Is.EqualTo(between <= 0), "2D Overlaps, " + at);
-            }
-        }
+        public void DistanceOnlyIsBetweenAcrossTheNearTouchBand() => LinearFamilies.CheckAgainstBetweenAcrossTheNearTouchBand("segment", 20261208);
     }
 }
