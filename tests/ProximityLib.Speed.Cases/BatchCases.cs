@@ -2,12 +2,16 @@ using System;
 using System.Numerics;
 using ProximityLib.Batch;
 using F = ProximityLib;
+using FC = ProximityLib.ClosestDistance;
+using FQ = ProximityLib.ProximityQuery;
 
 namespace ProximitySpeed
 {
     /// <summary>
     /// Every batch query (ProximityLib.Batch), on the float inputs of its scalar query and in its group, so the harness
     /// can set it beside the scalar API: paired (a[i] against b[i]) and one-to-many (a[r] against all of b), timed per pair.
+    /// The one-to-many pairs are not the scalar cases' pairs (one shape against all of b is mostly apart, and its branches
+    /// go another way), so each also has the scalar API looped over the same pairs: "scalar one-to-many".
     /// </summary>
     internal static class BatchCases
     {
@@ -15,46 +19,62 @@ namespace ProximitySpeed
         {
             var (s1, s2) = Sides<F.Sphere, F.Sphere>(inputs, "3D sphere–sphere");
             SphereSet ss1 = new SphereSet(s1), ss2 = new SphereSet(s2);
-            Distances(add, "3D sphere–sphere", s1.Length, r => BatchQuery.Distances(ss1, ss2, r), (i, r) => BatchQuery.Distances(s1[i], ss2, r));
-            Overlaps(add, "3D sphere–sphere", s1.Length, r => BatchQuery.Overlaps(ss1, ss2, r), (i, r) => BatchQuery.Overlaps(s1[i], ss2, r));
+            Distances(add, "3D sphere–sphere", s1.Length, r => BatchQuery.Distances(ss1, ss2, r), (i, r) => BatchQuery.Distances(s1[i], ss2, r),
+                (i, r) => { for (int j = 0; j < r.Length; j++) r[j] = FC.Distance(s1[i], s2[j]); });
+            Overlaps(add, "3D sphere–sphere", s1.Length, r => BatchQuery.Overlaps(ss1, ss2, r), (i, r) => BatchQuery.Overlaps(s1[i], ss2, r),
+                (i, r) => { for (int j = 0; j < r.Length; j++) r[j] = FQ.Overlaps(s1[i], s2[j]); });
 
             var (p, pb) = Sides<Vector3, F.Aabb3>(inputs, "3D point–AABB");
             PointSet ps = new PointSet(p);
             AabbSet pbs = new AabbSet(pb);
-            Distances(add, "3D point–AABB", p.Length, r => BatchQuery.Distances(ps, pbs, r), (i, r) => BatchQuery.Distances(p[i], pbs, r));
-            Overlaps(add, "3D point–AABB", p.Length, r => BatchQuery.Overlaps(ps, pbs, r), (i, r) => BatchQuery.Overlaps(p[i], pbs, r));
+            Distances(add, "3D point–AABB", p.Length, r => BatchQuery.Distances(ps, pbs, r), (i, r) => BatchQuery.Distances(p[i], pbs, r),
+                (i, r) => { for (int j = 0; j < r.Length; j++) r[j] = FC.Distance(p[i], pb[j]); });
+            Overlaps(add, "3D point–AABB", p.Length, r => BatchQuery.Overlaps(ps, pbs, r), (i, r) => BatchQuery.Overlaps(p[i], pbs, r),
+                (i, r) => { for (int j = 0; j < r.Length; j++) r[j] = FQ.Overlaps(p[i], pb[j]); });
 
             var (sa, ab) = Sides<F.Sphere, F.Aabb3>(inputs, "3D sphere–AABB");
             SphereSet sas = new SphereSet(sa);
             AabbSet abs = new AabbSet(ab);
-            Distances(add, "3D sphere–AABB", sa.Length, r => BatchQuery.Distances(sas, abs, r), (i, r) => BatchQuery.Distances(sa[i], abs, r));
-            Overlaps(add, "3D sphere–AABB", sa.Length, r => BatchQuery.Overlaps(sas, abs, r), (i, r) => BatchQuery.Overlaps(sa[i], abs, r));
+            Distances(add, "3D sphere–AABB", sa.Length, r => BatchQuery.Distances(sas, abs, r), (i, r) => BatchQuery.Distances(sa[i], abs, r),
+                (i, r) => { for (int j = 0; j < r.Length; j++) r[j] = FC.Distance(sa[i], ab[j]); });
+            Overlaps(add, "3D sphere–AABB", sa.Length, r => BatchQuery.Overlaps(sas, abs, r), (i, r) => BatchQuery.Overlaps(sa[i], abs, r),
+                (i, r) => { for (int j = 0; j < r.Length; j++) r[j] = FQ.Overlaps(sa[i], ab[j]); });
 
             var (a1, a2) = Sides<F.Aabb3, F.Aabb3>(inputs, "3D AABB–AABB");
             AabbSet as1 = new AabbSet(a1), as2 = new AabbSet(a2);
-            Overlaps(add, "3D AABB–AABB", a1.Length, r => BatchQuery.Overlaps(as1, as2, r), (i, r) => BatchQuery.Overlaps(a1[i], as2, r));
+            Overlaps(add, "3D AABB–AABB", a1.Length, r => BatchQuery.Overlaps(as1, as2, r), (i, r) => BatchQuery.Overlaps(a1[i], as2, r),
+                (i, r) => { for (int j = 0; j < r.Length; j++) r[j] = FQ.Overlaps(a1[i], a2[j]); });
 
             var (so, ob) = Sides<F.Sphere, F.Obb3>(inputs, "3D sphere–OBB");
             SphereSet sos = new SphereSet(so);
             ObbSet obs = new ObbSet(ob);
-            Distances(add, "3D sphere–OBB", so.Length, r => BatchQuery.Distances(sos, obs, r), (i, r) => BatchQuery.Distances(so[i], obs, r));
-            Overlaps(add, "3D sphere–OBB", so.Length, r => BatchQuery.Overlaps(sos, obs, r), (i, r) => BatchQuery.Overlaps(so[i], obs, r));
+            Distances(add, "3D sphere–OBB", so.Length, r => BatchQuery.Distances(sos, obs, r), (i, r) => BatchQuery.Distances(so[i], obs, r),
+                (i, r) => { for (int j = 0; j < r.Length; j++) r[j] = FC.Distance(so[i], ob[j]); });
+            Overlaps(add, "3D sphere–OBB", so.Length, r => BatchQuery.Overlaps(sos, obs, r), (i, r) => BatchQuery.Overlaps(so[i], obs, r),
+                (i, r) => { for (int j = 0; j < r.Length; j++) r[j] = FQ.Overlaps(so[i], ob[j]); });
 
             var (g1, g2) = Sides<F.Segment3, F.Segment3>(inputs, "3D segment–segment");
             SegmentSet gs1 = new SegmentSet(g1), gs2 = new SegmentSet(g2);
-            Distances(add, "3D segment–segment", g1.Length, r => BatchQuery.Distances(gs1, gs2, r), (i, r) => BatchQuery.Distances(g1[i], gs2, r));
+            Distances(add, "3D segment–segment", g1.Length, r => BatchQuery.Distances(gs1, gs2, r), (i, r) => BatchQuery.Distances(g1[i], gs2, r),
+                (i, r) => { for (int j = 0; j < r.Length; j++) r[j] = FC.Distance(g1[i], g2[j]); });
 
             var (o1, o2) = Sides<F.Obb3, F.Obb3>(inputs, "3D OBB–OBB");
             ObbSet os1 = new ObbSet(o1), os2 = new ObbSet(o2);
-            Overlaps(add, "3D OBB–OBB", o1.Length, r => BatchQuery.Overlaps(os1, os2, r), (i, r) => BatchQuery.Overlaps(o1[i], os2, r));
+            Overlaps(add, "3D OBB–OBB", o1.Length, r => BatchQuery.Overlaps(os1, os2, r), (i, r) => BatchQuery.Overlaps(o1[i], os2, r),
+                (i, r) => { for (int j = 0; j < r.Length; j++) r[j] = FQ.Overlaps(o1[i], o2[j]); });
         }
 
         private static (TA[] A, TB[] B) Sides<TA, TB>(InputSet inputs, string query) =>
             (Shapes.Of<TA>(inputs.Side(query, 0)), Shapes.Of<TB>(inputs.Side(query, 1)));
 
-        private static void Distances(Action<string, string, int, Func<int, double>> add, string query, int n, Action<float[]> paired, Action<int, float[]> oneToMany)
+        private static void Distances(Action<string, string, int, Func<int, double>> add, string query, int n, Action<float[]> paired, Action<int, float[]> oneToMany, Action<int, float[]> scalarOneToMany)
         {
             var result = new float[n];
+            add("float " + query + " distance", "scalar one-to-many Distance", n, reps =>
+            {
+                for (int r = 0; r < reps; r++) scalarOneToMany(r % n, result);
+                return result[n / 2];
+            });
             add("float " + query + " distance", "batch paired Distances", n, reps =>
             {
                 for (int r = 0; r < reps; r++) paired(result);
@@ -67,9 +87,14 @@ namespace ProximitySpeed
             });
         }
 
-        private static void Overlaps(Action<string, string, int, Func<int, double>> add, string query, int n, Action<bool[]> paired, Action<int, bool[]> oneToMany)
+        private static void Overlaps(Action<string, string, int, Func<int, double>> add, string query, int n, Action<bool[]> paired, Action<int, bool[]> oneToMany, Action<int, bool[]> scalarOneToMany)
         {
             var result = new bool[n];
+            add("float " + query + " overlap", "scalar one-to-many Overlaps", n, reps =>
+            {
+                for (int r = 0; r < reps; r++) scalarOneToMany(r % n, result);
+                return result[n / 2] ? 1 : 0;
+            });
             add("float " + query + " overlap", "batch paired Overlaps", n, reps =>
             {
                 for (int r = 0; r < reps; r++) paired(result);

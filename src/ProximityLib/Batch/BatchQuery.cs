@@ -148,6 +148,29 @@ namespace ProximityLib.Batch
             return -depth - r;
         }
 
+        /// <summary>
+        /// The scalar lanes' squared gap less r², the vector lanes' bits without a branch: each axis's p − clamp(p, lo, hi)
+        /// is ±(p − hi) above the box, ±(p − lo) below it and 0 inside, so its square is that of (p − hi)⁺ + (lo − p)⁺
+        /// (at most one term is nonzero; negation is exact). On Mono the clamps' branches mispredicted on mixed inputs
+        /// and made the one-to-many queries slower than the scalar API.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static float Margin(float px, float py, float pz, float r, float lox, float loy, float loz, float hix, float hiy, float hiz)
+        {
+            float dx = Positive(px - hix) + Positive(lox - px);
+            float dy = Positive(py - hiy) + Positive(loy - py);
+            float dz = Positive(pz - hiz) + Positive(loz - pz);
+            return dx * dx + dy * dy + dz * dz - r * r;
+        }
+
+        /// <summary>max(t, 0) from the sign bit (−0 and negatives give +0).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static float Positive(float t)
+        {
+            int bits = BitConverter.SingleToInt32Bits(t);
+            return BitConverter.Int32BitsToSingle(bits & ~(bits >> 31));
+        }
+
         private struct SphereSphere<TS> : IKernel where TS : struct, ISpheres
         {
             private TS _a;
@@ -167,14 +190,47 @@ namespace ProximityLib.Batch
             }
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            public float Lane(int i)
+            public float Lane(int i) => Value(_a.XAt(i) - _b.X[i], _a.YAt(i) - _b.Y[i], _a.ZAt(i) - _b.Z[i], _a.RAt(i) + _b.R[i], _margin);
+
+            // The scalar lanes over pinned arrays, one loop for paired spheres and one for a broadcast sphere: through
+            // Lane (a field and a bounds check per coordinate) they ran slower on Mono than the scalar API.
+
+            public unsafe void Values(int start, int end, Span<float> result)
             {
-                var dx = _a.XAt(i) - _b.X[i];
-                var dy = _a.YAt(i) - _b.Y[i];
-                var dz = _a.ZAt(i) - _b.Z[i];
+                fixed (float* bx = _b.X, by = _b.Y, bz = _b.Z, br = _b.R, ax = _a.Xs, ay = _a.Ys, az = _a.Zs, ar = _a.Rs)
+                fixed (float* v = result)
+                {
+                    if (ax == null)
+                    {
+                        float x = _a.XAt(0), y = _a.YAt(0), z = _a.ZAt(0), r = _a.RAt(0);
+                        for (int i = start; i < end; i++) v[i] = Value(x - bx[i], y - by[i], z - bz[i], r + br[i], false);
+                    }
+                    else
+                        for (int i = start; i < end; i++) v[i] = Value(ax[i] - bx[i], ay[i] - by[i], az[i] - bz[i], ar[i] + br[i], false);
+                }
+            }
+
+            public unsafe void Verdicts(int start, int end, Span<bool> result)
+            {
+                fixed (float* bx = _b.X, by = _b.Y, bz = _b.Z, br = _b.R, ax = _a.Xs, ay = _a.Ys, az = _a.Zs, ar = _a.Rs)
+                fixed (bool* v = result)
+                {
+                    if (ax == null)
+                    {
+                        float x = _a.XAt(0), y = _a.YAt(0), z = _a.ZAt(0), r = _a.RAt(0);
+                        for (int i = start; i < end; i++) v[i] = Value(x - bx[i], y - by[i], z - bz[i], r + br[i], true) <= 0;
+                    }
+                    else
+                        for (int i = start; i < end; i++) v[i] = Value(ax[i] - bx[i], ay[i] - by[i], az[i] - bz[i], ar[i] + br[i], true) <= 0;
+                }
+            }
+
+            /// <summary>One lane of <see cref="Compute"/> from the center offset and the radii's sum.</summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static float Value(float dx, float dy, float dz, float r, bool margin)
+            {
                 var d2 = dx * dx + dy * dy + dz * dz;
-                var r = _a.RAt(i) + _b.R[i];
-                return _margin ? d2 - r * r : MathF.Sqrt(d2) - r;
+                return margin ? d2 - r * r : MathF.Sqrt(d2) - r;
             }
         }
 
@@ -191,38 +247,63 @@ namespace ProximityLib.Batch
                 new Vector<float>(_b.MaxX, i), new Vector<float>(_b.MaxY, i), new Vector<float>(_b.MaxZ, i), _margin);
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            public float Lane(int i) => _margin
-                ? Margin(_a.XAt(i), _a.YAt(i), _a.ZAt(i), _a.RAt(i), i)
-                : PointBox(_a.XAt(i), _a.YAt(i), _a.ZAt(i), _a.RAt(i), _b.MinX[i], _b.MinY[i], _b.MinZ[i], _b.MaxX[i], _b.MaxY[i], _b.MaxZ[i], false);
+            public float Lane(int i) =>
+                PointBox(_a.XAt(i), _a.YAt(i), _a.ZAt(i), _a.RAt(i), _b.MinX[i], _b.MinY[i], _b.MinZ[i], _b.MaxX[i], _b.MaxY[i], _b.MaxZ[i], _margin);
 
-            /// <summary>
-            /// The margin value of lane i, which only verdicts read. Its sign is the vector lane's, found without the
-            /// clamps' branches where that is cheap, because on Mono they mispredicted on mixed inputs and one-to-many
-            /// verdicts ran 3× slower than the scalar API. For r² = 0 (points) the value d2 is ≤ 0 exactly when every
-            /// axis's squared gap is 0, which two subtractions and comparisons per axis give; otherwise the sums (in the vector order) stop at the
-            /// first axis whose partial sum exceeds r²: the sum only grows, so the sign is the full sum's.
-            /// </summary>
-            [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            private float Margin(float px, float py, float pz, float r, int i)
+            // The scalar lanes over pinned arrays: one loop each for paired spheres, paired points and one shape
+            // broadcast. Through Lane (a field and a bounds check per coordinate) the one-to-many queries ran slower on
+            // Mono than the scalar API.
+
+            public unsafe void Values(int start, int end, Span<float> result)
             {
-                float rr = r * r;
-                if (rr == 0) return Inside(px, _b.MinX[i], _b.MaxX[i]) & Inside(py, _b.MinY[i], _b.MaxY[i]) & Inside(pz, _b.MinZ[i], _b.MaxZ[i]) ? 0 : 1;
-                float dx = px - Runner.Clamp(px, _b.MinX[i], _b.MaxX[i]);
-                float d2 = dx * dx;
-                if (d2 > rr) return d2 - rr;
-                float dy = py - Runner.Clamp(py, _b.MinY[i], _b.MaxY[i]);
-                d2 += dy * dy;
-                if (d2 > rr) return d2 - rr;
-                float dz = pz - Runner.Clamp(pz, _b.MinZ[i], _b.MaxZ[i]);
-                return d2 + dz * dz - rr;
+                fixed (float* lx = _b.MinX, ly = _b.MinY, lz = _b.MinZ, hx = _b.MaxX, hy = _b.MaxY, hz = _b.MaxZ, px = _a.Xs, py = _a.Ys, pz = _a.Zs, pr = _a.Rs)
+                fixed (float* v = result)
+                {
+                    if (px == null)
+                    {
+                        float x = _a.XAt(0), y = _a.YAt(0), z = _a.ZAt(0), r = _a.RAt(0);
+                        for (int i = start; i < end; i++) v[i] = PointBox(x, y, z, r, lx[i], ly[i], lz[i], hx[i], hy[i], hz[i], false);
+                    }
+                    else if (pr == null)
+                        for (int i = start; i < end; i++) v[i] = PointBox(px[i], py[i], pz[i], 0, lx[i], ly[i], lz[i], hx[i], hy[i], hz[i], false);
+                    else
+                        for (int i = start; i < end; i++) v[i] = PointBox(px[i], py[i], pz[i], pr[i], lx[i], ly[i], lz[i], hx[i], hy[i], hz[i], false);
+                }
+            }
+
+            /// <summary>Whether the margin d2 − r² is ≤ 0 (only overlap queries ask).</summary>
+            public unsafe void Verdicts(int start, int end, Span<bool> result)
+            {
+                fixed (float* lx = _b.MinX, ly = _b.MinY, lz = _b.MinZ, hx = _b.MaxX, hy = _b.MaxY, hz = _b.MaxZ, px = _a.Xs, py = _a.Ys, pz = _a.Zs, pr = _a.Rs)
+                fixed (bool* v = result)
+                {
+                    if (px == null)
+                    {
+                        float x = _a.XAt(0), y = _a.YAt(0), z = _a.ZAt(0), r = _a.RAt(0);
+                        if (r * r == 0)
+                            for (int i = start; i < end; i++) v[i] = Inside(x, y, z, lx[i], ly[i], lz[i], hx[i], hy[i], hz[i]);
+                        else
+                            for (int i = start; i < end; i++) v[i] = Margin(x, y, z, r, lx[i], ly[i], lz[i], hx[i], hy[i], hz[i]) <= 0;
+                    }
+                    else if (pr == null)
+                        for (int i = start; i < end; i++) v[i] = Inside(px[i], py[i], pz[i], lx[i], ly[i], lz[i], hx[i], hy[i], hz[i]);
+                    else
+                        for (int i = start; i < end; i++) v[i] = Margin(px[i], py[i], pz[i], pr[i], lx[i], ly[i], lz[i], hx[i], hy[i], hz[i]) <= 0;
+                }
             }
 
             /// <summary>
-            /// Whether p − clamp(p, lo, hi) squares to 0 in float: the difference is at most 2^-75 in magnitude (its square
-            /// is then at most 2^-150, which rounds to 0, ties to even; any larger float difference squares to 2^-149 or more).
+            /// Whether p − clamp(p, lo, hi) squares to 0 in float on every axis, so d2 = 0 (a point's margin ≤ 0): the
+            /// difference is at most 2^-75 in magnitude (its square is then at most 2^-150, which rounds to 0, ties to
+            /// even; any larger float difference squares to 2^-149 or more). Each bound is read from a sign bit, without
+            /// a branch: (p − lo) + 2^-75 is ≥ 0 exactly when p − lo ≥ −2^-75, since a nonzero exact sum of floats does
+            /// not round to 0 and an exact 0 is +0.
             /// </summary>
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            private static bool Inside(float p, float lo, float hi) => (p - lo >= -SquaresToZero) & (p - hi <= SquaresToZero);
+            private static bool Inside(float px, float py, float pz, float lx, float ly, float lz, float hx, float hy, float hz) =>
+                (BitConverter.SingleToInt32Bits(px - lx + SquaresToZero) | BitConverter.SingleToInt32Bits(SquaresToZero - (px - hx))
+                | BitConverter.SingleToInt32Bits(py - ly + SquaresToZero) | BitConverter.SingleToInt32Bits(SquaresToZero - (py - hy))
+                | BitConverter.SingleToInt32Bits(pz - lz + SquaresToZero) | BitConverter.SingleToInt32Bits(SquaresToZero - (pz - hz))) >= 0;
 
             private const float SquaresToZero = 1f / (1L << 62) / (1 << 13);
         }
@@ -233,6 +314,10 @@ namespace ProximityLib.Batch
             private readonly ObbSet _b;
             private readonly bool _margin;
             public SphereObb(TS a, ObbSet b, bool margin) { _a = a; _b = b; _margin = margin; }
+
+            public void Values(int start, int end, Span<float> result) => Runner.EachLane(ref this, start, end, result);
+
+            public void Verdicts(int start, int end, Span<bool> result) => Runner.EachLane(ref this, start, end, result);
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             public Vector<float> Compute(int i)
@@ -279,6 +364,10 @@ namespace ProximityLib.Batch
             private TA _a;
             private readonly SegmentSet _b;
             public SegmentSegment(TA a, SegmentSet b) { _a = a; _b = b; }
+
+            public void Values(int start, int end, Span<float> result) => Runner.EachLane(ref this, start, end, result);
+
+            public void Verdicts(int start, int end, Span<bool> result) => Runner.EachLane(ref this, start, end, result);
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             public Vector<float> Compute(int i)
@@ -412,6 +501,10 @@ namespace ProximityLib.Batch
             private readonly ObbSet _b;
             public ObbObb(TA a, ObbSet b) { _a = a; _b = b; }
 
+            public void Values(int start, int end, Span<float> result) => Runner.EachLane(ref this, start, end, result);
+
+            public void Verdicts(int start, int end, Span<bool> result) => Runner.EachLane(ref this, start, end, result);
+
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             public Vector<float> Compute(int i)
             {
@@ -494,6 +587,8 @@ namespace ProximityLib.Batch
             private readonly AabbSet _b;
             public AabbAabb(TA a, AabbSet b) { _a = a; _b = b; }
 
+            public void Values(int start, int end, Span<float> result) => Runner.EachLane(ref this, start, end, result);
+
             /// <summary>The largest per-axis gap: ≤ 0 exactly when the boxes touch or overlap (paper Eq. 18).</summary>
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             public Vector<float> Compute(int i)
@@ -504,20 +599,50 @@ namespace ProximityLib.Batch
                 return Runner.MaxNative(gx, Runner.MaxNative(gy, gz));
             }
 
-            /// <summary>
-            /// −1 where every gap is ≤ 0, else 1: a gap lo − hi of two floats is ≤ 0 exactly when lo ≤ hi (a difference of
-            /// floats is zero only when they are equal), so the six comparisons give the vector verdict. They are joined
-            /// without short-circuit: on Mono, branching on each one mispredicted on mixed inputs and made the one-to-many
-            /// verdicts slower than the scalar API.
-            /// </summary>
+            /// <summary>−1 where the boxes touch or overlap, else 1 (<see cref="Touch"/>).</summary>
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             public float Lane(int i)
             {
                 _a.CornersAt(i, out var minX, out var minY, out var minZ, out var maxX, out var maxY, out var maxZ);
-                bool touch = (_b.MinX[i] <= maxX) & (minX <= _b.MaxX[i]) & (_b.MinY[i] <= maxY) & (minY <= _b.MaxY[i])
-                    & (_b.MinZ[i] <= maxZ) & (minZ <= _b.MaxZ[i]);
-                return touch ? -1 : 1;
+                return Touch(minX, minY, minZ, maxX, maxY, maxZ, _b.MinX[i], _b.MinY[i], _b.MinZ[i], _b.MaxX[i], _b.MaxY[i], _b.MaxZ[i]) ? -1 : 1;
             }
+
+            /// <summary>
+            /// The scalar verdicts over pinned arrays, one loop for paired sets and one for a broadcast box: reading the
+            /// sets through <see cref="Lane"/> (a field and a bounds check per coordinate) made them slower on Mono than
+            /// the scalar API, and so did branching on each axis (mispredicted on mixed inputs).
+            /// </summary>
+            public unsafe void Verdicts(int start, int end, Span<bool> result)
+            {
+                fixed (float* bx0 = _b.MinX, by0 = _b.MinY, bz0 = _b.MinZ, bx1 = _b.MaxX, by1 = _b.MaxY, bz1 = _b.MaxZ)
+                fixed (bool* r = result)
+                {
+                    var set = _a.Set;
+                    if (set != null)
+                    {
+                        fixed (float* ax0 = set.MinX, ay0 = set.MinY, az0 = set.MinZ, ax1 = set.MaxX, ay1 = set.MaxY, az1 = set.MaxZ)
+                            for (int i = start; i < end; i++)
+                                r[i] = Touch(ax0[i], ay0[i], az0[i], ax1[i], ay1[i], az1[i], bx0[i], by0[i], bz0[i], bx1[i], by1[i], bz1[i]);
+                    }
+                    else
+                    {
+                        _a.CornersAt(0, out var minX, out var minY, out var minZ, out var maxX, out var maxY, out var maxZ);
+                        for (int i = start; i < end; i++)
+                            r[i] = Touch(minX, minY, minZ, maxX, maxY, maxZ, bx0[i], by0[i], bz0[i], bx1[i], by1[i], bz1[i]);
+                    }
+                }
+            }
+
+            /// <summary>
+            /// Whether every gap lo − hi of <see cref="Compute"/> is ≤ 0, read from the sign bits of hi − lo without a
+            /// branch: a difference of floats is 0 only when they are equal, and never −0 then, because the shapes store
+            /// no −0 (−0 − +0 would be −0); its sign survives overflow to ±∞. So these are the vector lanes' verdicts.
+            /// </summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static bool Touch(float ax0, float ay0, float az0, float ax1, float ay1, float az1, float bx0, float by0, float bz0, float bx1, float by1, float bz1) =>
+                (BitConverter.SingleToInt32Bits(ax1 - bx0) | BitConverter.SingleToInt32Bits(bx1 - ax0)
+                | BitConverter.SingleToInt32Bits(ay1 - by0) | BitConverter.SingleToInt32Bits(by1 - ay0)
+                | BitConverter.SingleToInt32Bits(az1 - bz0) | BitConverter.SingleToInt32Bits(bz1 - az0)) >= 0;
         }
     }
 }

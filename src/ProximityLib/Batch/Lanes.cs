@@ -1,3 +1,4 @@
+using System;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
@@ -18,12 +19,21 @@ namespace ProximityLib.Batch
         float YAt(int i);
         float ZAt(int i);
         float RAt(int i);
+        /// <summary>The centers' arrays for paired lanes (null for one shape broadcast), and the radii's (null for points).</summary>
+        float[]? Xs { get; }
+        float[]? Ys { get; }
+        float[]? Zs { get; }
+        float[]? Rs { get; }
     }
 
     internal readonly struct SphereLanes : ISpheres
     {
         private readonly SphereSet _s;
         public SphereLanes(SphereSet s) { _s = s; }
+        public float[]? Xs => _s.X;
+        public float[]? Ys => _s.Y;
+        public float[]? Zs => _s.Z;
+        public float[]? Rs => _s.R;
         public Vector<float> X(int i) => new Vector<float>(_s.X, i);
         public Vector<float> Y(int i) => new Vector<float>(_s.Y, i);
         public Vector<float> Z(int i) => new Vector<float>(_s.Z, i);
@@ -39,6 +49,10 @@ namespace ProximityLib.Batch
     {
         private readonly PointSet _s;
         public PointLanes(PointSet s) { _s = s; }
+        public float[]? Xs => _s.X;
+        public float[]? Ys => _s.Y;
+        public float[]? Zs => _s.Z;
+        public float[]? Rs => null;
         public Vector<float> X(int i) => new Vector<float>(_s.X, i);
         public Vector<float> Y(int i) => new Vector<float>(_s.Y, i);
         public Vector<float> Z(int i) => new Vector<float>(_s.Z, i);
@@ -59,6 +73,10 @@ namespace ProximityLib.Batch
             _x = new Vector<float>(c.X); _y = new Vector<float>(c.Y); _z = new Vector<float>(c.Z); _r = new Vector<float>(r);
             _c = c; _radius = r;
         }
+        public float[]? Xs => null;
+        public float[]? Ys => null;
+        public float[]? Zs => null;
+        public float[]? Rs => null;
         public Vector<float> X(int i) => _x;
         public Vector<float> Y(int i) => _y;
         public Vector<float> Z(int i) => _z;
@@ -79,12 +97,15 @@ namespace ProximityLib.Batch
         Vector<float> MaxZ(int i);
         /// <summary>Box i's corners (min x, y, z, max x, y, z) for the scalar lanes.</summary>
         void CornersAt(int i, out float minX, out float minY, out float minZ, out float maxX, out float maxY, out float maxZ);
+        /// <summary>The set for paired lanes, null for one box broadcast.</summary>
+        AabbSet? Set { get; }
     }
 
     internal readonly struct AabbLanes : IAabbs
     {
         private readonly AabbSet _s;
         public AabbLanes(AabbSet s) { _s = s; }
+        public AabbSet? Set => _s;
         public Vector<float> MinX(int i) => new Vector<float>(_s.MinX, i);
         public Vector<float> MinY(int i) => new Vector<float>(_s.MinY, i);
         public Vector<float> MinZ(int i) => new Vector<float>(_s.MinZ, i);
@@ -109,6 +130,7 @@ namespace ProximityLib.Batch
             _maxX = new Vector<float>(max.X); _maxY = new Vector<float>(max.Y); _maxZ = new Vector<float>(max.Z);
             _min = min; _max = max;
         }
+        public AabbSet? Set => null;
         public Vector<float> MinX(int i) => _minX;
         public Vector<float> MinY(int i) => _minY;
         public Vector<float> MinZ(int i) => _minZ;
@@ -263,5 +285,15 @@ namespace ProximityLib.Batch
         /// whether the value is ≤ 0 agrees.
         /// </summary>
         float Lane(int i);
+
+        /// <summary>
+        /// <see cref="Lane"/> for lanes start to end − 1 into result, where <see cref="Vector{T}"/> is not
+        /// hardware-accelerated. A kernel whose <see cref="Lane"/> reads its sets through bounds-checked field loads
+        /// on every lane (slow on Mono) writes its own loop over pinned arrays; the rest call Runner.EachLane.
+        /// </summary>
+        void Values(int start, int end, Span<float> result);
+
+        /// <summary>Whether <see cref="Lane"/> is ≤ 0 for lanes start to end − 1, as <see cref="Values"/>.</summary>
+        void Verdicts(int start, int end, Span<bool> result);
     }
 }

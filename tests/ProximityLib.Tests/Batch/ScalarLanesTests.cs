@@ -205,6 +205,38 @@ namespace ProximityTests.Batch
         }
 
         [Test]
+        public void BoxesTouchingAtZerosOfEitherSignTouchInEveryLane()
+        {
+            // Faces meeting at 0 with the zeros' signs in every combination, on each axis, and boxes one float step
+            // apart. The scalar verdicts read the sign bits of differences, where (−0) − (+0) = −0 would look like a gap:
+            // this fails if the shapes stop storing −0 as +0.
+            var cases = new List<(F.Aabb3 A, F.Aabb3 B, bool Touch)>();
+            float step = float.Epsilon;
+            foreach (float high in new[] { 0f, -0f })
+                foreach (float low in new[] { 0f, -0f })
+                    for (int axis = 0; axis < 3; axis++)
+                    {
+                        Vector3 Along(float v, float rest) => new Vector3(axis == 0 ? v : rest, axis == 1 ? v : rest, axis == 2 ? v : rest);
+                        var below = new F.Aabb3(Along(-1, -1), Along(high, 1));
+                        var above = new F.Aabb3(Along(low, -1), Along(1, 1));
+                        var apart = new F.Aabb3(Along(step, -1), Along(1, 1));
+                        cases.Add((below, above, true));
+                        cases.Add((above, below, true));
+                        cases.Add((below, apart, false));
+                        cases.Add((apart, below, false));
+                    }
+            var a = new AabbSet(cases.Select(c => c.A).ToArray());
+            var b = new AabbSet(cases.Select(c => c.B).ToArray());
+            var expected = cases.Select(c => c.Touch).ToArray();
+            foreach (bool vectorized in new[] { true, false })
+            {
+                Assert.That(Run<bool>(vectorized, cases.Count, x => BatchQuery.Overlaps(a, b, x)), Is.EqualTo(expected), $"paired, vectorized {vectorized}");
+                for (int i = 0; i < cases.Count; i++)
+                    Assert.That(Run<bool>(vectorized, 1, x => BatchQuery.Overlaps(cases[i].A, new AabbSet(new[] { cases[i].B }), x))[0], Is.EqualTo(expected[i]), $"one-to-many, case {i}, vectorized {vectorized}");
+            }
+        }
+
+        [Test]
         public void MinimumOrdersSignedZerosAndPropagatesNaN()
         {
             Assert.That(BitConverter.SingleToInt32Bits(Runner.Min(0f, -0f)), Is.EqualTo(BitConverter.SingleToInt32Bits(-0f)));

@@ -189,6 +189,16 @@ namespace ProximityTests.Batch
                 return i;
             }
 
+            public void Values(int start, int end, Span<float> result)
+            {
+                for (int i = start; i < end; i++) result[i] = Lane(i);
+            }
+
+            public void Verdicts(int start, int end, Span<bool> result)
+            {
+                for (int i = start; i < end; i++) result[i] = Lane(i) <= 0;
+            }
+
             private void Record(int i)
             {
                 Interlocked.Increment(ref Hits[i]);
