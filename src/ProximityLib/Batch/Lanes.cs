@@ -154,7 +154,15 @@ namespace ProximityLib.Batch
         Vector<float> BY(int i);
         Vector<float> BZ(int i);
         /// <summary>Segment i's endpoints for the scalar lanes.</summary>
-        void EndsAt(int i, out Vector3 a, out Vector3 b);
+        void EndsAt(int i, out SegmentLane s);
+        /// <summary>The set for paired lanes, null for one segment broadcast.</summary>
+        SegmentSet? Set { get; }
+    }
+
+    /// <summary>One segment's endpoints in scalar floats, for the scalar lanes.</summary>
+    internal struct SegmentLane
+    {
+        public float AX, AY, AZ, BX, BY, BZ;
     }
 
     internal readonly struct SegmentLanes : ISegments
@@ -169,22 +177,23 @@ namespace ProximityLib.Batch
         public Vector<float> BZ(int i) => new Vector<float>(_s.BZ, i);
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public void EndsAt(int i, out Vector3 a, out Vector3 b)
+        public void EndsAt(int i, out SegmentLane s)
         {
-            a = new Vector3(_s.AX[i], _s.AY[i], _s.AZ[i]);
-            b = new Vector3(_s.BX[i], _s.BY[i], _s.BZ[i]);
+            s.AX = _s.AX[i]; s.AY = _s.AY[i]; s.AZ = _s.AZ[i]; s.BX = _s.BX[i]; s.BY = _s.BY[i]; s.BZ = _s.BZ[i];
         }
+
+        public SegmentSet? Set => _s;
     }
 
     internal readonly struct SegmentBroadcast : ISegments
     {
         private readonly Vector<float> _ax, _ay, _az, _bx, _by, _bz;
-        private readonly Vector3 _a, _b;
+        private readonly SegmentLane _one;
         public SegmentBroadcast(Vector3 a, Vector3 b)
         {
             _ax = new Vector<float>(a.X); _ay = new Vector<float>(a.Y); _az = new Vector<float>(a.Z);
             _bx = new Vector<float>(b.X); _by = new Vector<float>(b.Y); _bz = new Vector<float>(b.Z);
-            _a = a; _b = b;
+            _one = new SegmentLane { AX = a.X, AY = a.Y, AZ = a.Z, BX = b.X, BY = b.Y, BZ = b.Z };
         }
         public Vector<float> AX(int i) => _ax;
         public Vector<float> AY(int i) => _ay;
@@ -194,10 +203,9 @@ namespace ProximityLib.Batch
         public Vector<float> BZ(int i) => _bz;
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public void EndsAt(int i, out Vector3 a, out Vector3 b)
-        {
-            a = _a; b = _b;
-        }
+        public void EndsAt(int i, out SegmentLane s) => s = _one;
+
+        public SegmentSet? Set => null;
     }
 
     /// <summary>Oriented boxes lane by lane: center, axes (row-wise: X axis, Y axis, Z axis) and half-extents.</summary>
@@ -205,7 +213,15 @@ namespace ProximityLib.Batch
     {
         void Load(int i, out V3 center, out V3 x, out V3 y, out V3 z, out V3 half);
         /// <summary>Box i for the scalar lanes.</summary>
-        void LoadAt(int i, out Vector3 center, out Vector3 x, out Vector3 y, out Vector3 z, out Vector3 half);
+        void LoadAt(int i, out ObbLane box);
+        /// <summary>The set for paired lanes, null for one box broadcast.</summary>
+        ObbSet? Set { get; }
+    }
+
+    /// <summary>One oriented box in scalar floats (center, axes row-wise, half-extents), for the scalar lanes.</summary>
+    internal struct ObbLane
+    {
+        public float CX, CY, CZ, XX, XY, XZ, YX, YY, YZ, ZX, ZY, ZZ, HX, HY, HZ;
     }
 
     /// <summary>Three lanes of coordinates.</summary>
@@ -234,25 +250,31 @@ namespace ProximityLib.Batch
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public void LoadAt(int i, out Vector3 center, out Vector3 x, out Vector3 y, out Vector3 z, out Vector3 half)
+        public void LoadAt(int i, out ObbLane box)
         {
-            center = new Vector3(_s.CX[i], _s.CY[i], _s.CZ[i]);
-            x = new Vector3(_s.XX[i], _s.XY[i], _s.XZ[i]);
-            y = new Vector3(_s.YX[i], _s.YY[i], _s.YZ[i]);
-            z = new Vector3(_s.ZX[i], _s.ZY[i], _s.ZZ[i]);
-            half = new Vector3(_s.HX[i], _s.HY[i], _s.HZ[i]);
+            box.CX = _s.CX[i]; box.CY = _s.CY[i]; box.CZ = _s.CZ[i];
+            box.XX = _s.XX[i]; box.XY = _s.XY[i]; box.XZ = _s.XZ[i];
+            box.YX = _s.YX[i]; box.YY = _s.YY[i]; box.YZ = _s.YZ[i];
+            box.ZX = _s.ZX[i]; box.ZY = _s.ZY[i]; box.ZZ = _s.ZZ[i];
+            box.HX = _s.HX[i]; box.HY = _s.HY[i]; box.HZ = _s.HZ[i];
         }
+
+        public ObbSet? Set => _s;
     }
 
     internal readonly struct ObbBroadcast : IObbs
     {
         private readonly V3 _c, _x, _y, _z, _h;
-        private readonly Vector3 _center, _axisX, _axisY, _axisZ, _half;
+        private readonly ObbLane _box;
         public ObbBroadcast(Obb3 b)
         {
-            _center = b.Center; _axisX = b.AxisX; _axisY = b.AxisY; _axisZ = b.AxisZ; _half = b.HalfExtents;
-            _c = V3.Broadcast(_center); _x = V3.Broadcast(_axisX); _y = V3.Broadcast(_axisY); _z = V3.Broadcast(_axisZ);
-            _h = V3.Broadcast(_half);
+            Vector3 c = b.Center, x = b.AxisX, y = b.AxisY, z = b.AxisZ, h = b.HalfExtents;
+            _c = V3.Broadcast(c); _x = V3.Broadcast(x); _y = V3.Broadcast(y); _z = V3.Broadcast(z); _h = V3.Broadcast(h);
+            _box = new ObbLane
+            {
+                CX = c.X, CY = c.Y, CZ = c.Z, XX = x.X, XY = x.Y, XZ = x.Z, YX = y.X, YY = y.Y, YZ = y.Z,
+                ZX = z.X, ZY = z.Y, ZZ = z.Z, HX = h.X, HY = h.Y, HZ = h.Z,
+            };
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -262,10 +284,9 @@ namespace ProximityLib.Batch
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public void LoadAt(int i, out Vector3 center, out Vector3 x, out Vector3 y, out Vector3 z, out Vector3 half)
-        {
-            center = _center; x = _axisX; y = _axisY; z = _axisZ; half = _half;
-        }
+        public void LoadAt(int i, out ObbLane box) => box = _box;
+
+        public ObbSet? Set => null;
     }
 
     /// <summary>
