@@ -114,46 +114,22 @@ namespace ProximityMonoCheck
 
         // ---- The 300 query overloads: every ordered pair of kinds, Between, Distance and Overlaps, float and double. ----
 
-        private static void Float3()
-        {
-            Pairs(P3, P3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(P3, G3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(P3, S3, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(P3, A3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(P3, B3, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(G3, P3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(G3, G3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(G3, S3, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(G3, A3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(G3, B3, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(S3, P3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(S3, G3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(S3, S3, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(S3, A3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(S3, B3, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(A3, P3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(A3, G3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(A3, S3, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(A3, A3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(A3, B3, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(B3, P3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(B3, G3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(B3, S3, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(B3, A3, FC.Between, FC.Distance, FQ.Overlaps); Pairs(B3, B3, FC.Between, FC.Distance, FQ.Overlaps);
-        }
+        private static void Float3() => EveryPair(typeof(FC), typeof(FQ), P3, G3, S3, A3, B3);
 
-        private static void Float2()
-        {
-            Pairs(P2, P2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(P2, G2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(P2, C2, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(P2, A2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(P2, B2, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(G2, P2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(G2, G2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(G2, C2, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(G2, A2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(G2, B2, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(C2, P2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(C2, G2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(C2, C2, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(C2, A2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(C2, B2, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(A2, P2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(A2, G2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(A2, C2, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(A2, A2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(A2, B2, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(B2, P2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(B2, G2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(B2, C2, FC.Between, FC.Distance, FQ.Overlaps);
-            Pairs(B2, A2, FC.Between, FC.Distance, FQ.Overlaps); Pairs(B2, B2, FC.Between, FC.Distance, FQ.Overlaps);
-        }
+        private static void Float2() => EveryPair(typeof(FC), typeof(FQ), P2, G2, C2, A2, B2);
 
-        private static void Double3() => EveryDoublePair(Array.ConvertAll(P3, x => (D.Vector3D)x), Array.ConvertAll(G3, x => (D.Segment3)x),
+        private static void Double3() => EveryPair(typeof(DC), typeof(DQ), Array.ConvertAll(P3, x => (D.Vector3D)x), Array.ConvertAll(G3, x => (D.Segment3)x),
             Array.ConvertAll(S3, x => (D.Sphere)x), Array.ConvertAll(A3, x => (D.Aabb3)x), Array.ConvertAll(B3, x => (D.Obb3)x));
 
-        private static void Double2() => EveryDoublePair(Array.ConvertAll(P2, x => (D.Vector2D)x), Array.ConvertAll(G2, x => (D.Segment2)x),
+        private static void Double2() => EveryPair(typeof(DC), typeof(DQ), Array.ConvertAll(P2, x => (D.Vector2D)x), Array.ConvertAll(G2, x => (D.Segment2)x),
             Array.ConvertAll(C2, x => (D.Circle)x), Array.ConvertAll(A2, x => (D.Aabb2)x), Array.ConvertAll(B2, x => (D.Obb2)x));
 
-        /// <summary><see cref="DoublePairs"/> on every ordered pair of the sample sets, in the order given.</summary>
-        private static void EveryDoublePair(params Array[] sets)
+        /// <summary><see cref="Pairs"/> on every ordered pair of the sample sets, in the order given.</summary>
+        private static void EveryPair(Type distance, Type proximity, params Array[] sets)
         {
             foreach (var a in sets)
                 foreach (var b in sets)
-                    DoublePairs(a, b);
+                    Pairs(distance, proximity, a, b);
         }
 
         // ---- The pairs with the shapes of issue 12: every such public overload, found by reflection, on four inputs per
@@ -220,35 +196,18 @@ namespace ProximityMonoCheck
             }
         }
 
-        /// <summary>Both queries on every pairing of a and b. The delegates are the overloads the compiler picked, so they are what coverage counts.</summary>
-        private static void Pairs<TA, TB, TR, TD>(TA[] a, TB[] b, Func<TA, TB, TR> between, Func<TA, TB, TD> distance, Func<TA, TB, bool> overlaps)
-        {
-            Called.Add(Signature(between.Method));
-            Called.Add(Signature(distance.Method));
-            Called.Add(Signature(overlaps.Method));
-            string kinds = $"({typeof(TA).Name}, {typeof(TB).Name})";
-            for (int i = 0; i < a.Length; i++)
-            {
-                for (int j = 0; j < b.Length; j++)
-                {
-                    Line($"Between{kinds} [{i},{j}] {Show(between(a[i], b[j]))}");
-                    Line($"Distance{kinds} [{i},{j}] {Show(distance(a[i], b[j]))}");
-                    Line($"Overlaps{kinds} [{i},{j}] {Show(overlaps(a[i], b[j]))}");
-                }
-            }
-        }
-
         /// <summary>
-        /// <see cref="Pairs"/> for the double API, whose shapes are <c>in</c> parameters: a method group does not convert to
-        /// a Func of by-value parameters, so the overloads are found by reflection (the ones the compiler would pick:
-        /// the shape types exactly) and invoked.
+        /// Between, Distance and Overlaps on every pairing of a and b. A shape may be an <c>in</c> parameter (the double
+        /// API's always are, the float API's where the kernel takes it so), and a method group of such an overload does
+        /// not convert to a Func of by-value parameters, so the overloads are found by reflection (the ones the compiler
+        /// would pick: the shape types exactly) and invoked.
         /// </summary>
-        private static void DoublePairs(Array a, Array b)
+        private static void Pairs(Type distanceOwner, Type proximityOwner, Array a, Array b)
         {
             Type ta = a.GetType().GetElementType()!, tb = b.GetType().GetElementType()!;
             MethodInfo Find(Type owner, string name) => owner.GetMethods(BindingFlags.Public | BindingFlags.Static | BindingFlags.DeclaredOnly)
                 .Single(m => m.Name == name && m.GetParameters() is var ps && ps.Length == 2 && Shape(ps[0]) == ta && Shape(ps[1]) == tb);
-            MethodInfo between = Find(typeof(DC), "Between"), distance = Find(typeof(DC), "Distance"), overlaps = Find(typeof(DQ), "Overlaps");
+            MethodInfo between = Find(distanceOwner, "Between"), distance = Find(distanceOwner, "Distance"), overlaps = Find(proximityOwner, "Overlaps");
             Called.Add(Signature(between));
             Called.Add(Signature(distance));
             Called.Add(Signature(overlaps));

@@ -38,8 +38,11 @@ namespace ProximityTests
         private static System.Reflection.MethodInfo? Find(string ns, string qualified, string method, string a, string b)
         {
             var type = typeof(ClosestDistance).Assembly.GetType($"{ns}.{qualified.Split('.')[0]}", true)!;
-            // The double API's shapes are in parameters: its signature has the by-reference types.
-            return type.GetMethod(method, new[] { Type(ns, a), Type(ns, b) }) ?? type.GetMethod(method, new[] { Type(ns, a).MakeByRefType(), Type(ns, b).MakeByRefType() });
+            // A shape may be an in parameter (the double API's always are; the float API's where the kernel takes it so):
+            // its signature then has the by-reference type.
+            Type ta = Type(ns, a), tb = Type(ns, b);
+            return new[] { (ta, tb), (ta.MakeByRefType(), tb), (ta, tb.MakeByRefType()), (ta.MakeByRefType(), tb.MakeByRefType()) }
+                .Select(p => type.GetMethod(method, new[] { p.Item1, p.Item2 })).FirstOrDefault(x => x != null);
         }
 
         private static Type Type(string ns, string name) => name switch

@@ -121,15 +121,15 @@ namespace ProximityLib
     {
         /// <summary>Whether an AABB and an OBB (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb3 a, Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Aabb3 a, in Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an OBB and an AABB (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb3 a, Aabb3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb3 a, in Aabb3 b) => Overlaps(b, a);
         /// <summary>Whether an AABB and an OBB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb2 a, Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Aabb2 a, in Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an OBB and an AABB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb2 a, Aabb2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb2 a, in Aabb2 b) => Overlaps(b, a);
     }
 }

@@ -92,10 +92,10 @@ namespace ProximityLib
         public static DistanceResult2 Between(Aabb2 a, Vector2 b) => Between(b, a).Swapped();
         /// <summary>Signed closest distance between a point and an AABB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector3 a, Aabb3 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
+        public static float Distance(Vector3 a, in Aabb3 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
         /// <summary>Signed closest distance between an AABB and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Aabb3 a, Vector3 b) => Distance(b, a);
+        public static float Distance(in Aabb3 a, Vector3 b) => Distance(b, a);
         /// <summary>Signed closest distance between a point and an AABB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(Vector2 a, Aabb2 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
@@ -108,10 +108,10 @@ namespace ProximityLib
     {
         /// <summary>Whether a point and an AABB (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3 a, Aabb3 b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner);
+        public static bool Overlaps(Vector3 a, in Aabb3 b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner);
         /// <summary>Whether an AABB and a point (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb3 a, Vector3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb3 a, Vector3 b) => Overlaps(b, a);
         /// <summary>Whether a point and an AABB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Vector2 a, Aabb2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner);

@@ -81,7 +81,7 @@ namespace ProximityLib
         public static DistanceResult2 Between(Circle a, Circle b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Signed closest distance between a sphere and a sphere (3D), computed in double, without the witness points: the Distance of <see cref="Between(Sphere, Sphere)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Sphere a, Sphere b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Sphere a, in Sphere b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a circle and a circle (2D), computed in double, without the witness points: the Distance of <see cref="Between(Circle, Circle)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(Circle a, Circle b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
@@ -91,7 +91,7 @@ namespace ProximityLib
     {
         /// <summary>Whether a sphere and a sphere (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Sphere b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Sphere a, in Sphere b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a circle and a circle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Circle a, Circle b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);

@@ -150,6 +150,29 @@ namespace ProximityLib.Batch
             return -depth - r;
         }
 
+        /// <summary>
+        /// The scalar lanes' squared gap less r², the vector lanes' bits without a branch: each axis's p − clamp(p, lo, hi)
+        /// is ±(p − hi) above the box, ±(p − lo) below it and 0 inside, so its square is that of (p − hi)⁺ + (lo − p)⁺
+        /// (at most one term is nonzero; negation is exact). On Mono the clamps' branches mispredicted on mixed inputs
+        /// and made the one-to-many queries slower than the scalar API.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static float Margin(float px, float py, float pz, float r, float lox, float loy, float loz, float hix, float hiy, float hiz)
+        {
+            float dx = Positive(px - hix) + Positive(lox - px);
+            float dy = Positive(py - hiy) + Positive(loy - py);
+            float dz = Positive(pz - hiz) + Positive(loz - pz);
+            return dx * dx + dy * dy + dz * dz - r * r;
+        }
+
+        /// <summary>max(t, 0) from the sign bit (−0 and negatives give +0).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static float Positive(float t)
+        {
+            int bits = BitConverter.SingleToInt32Bits(t);
+            return BitConverter.Int32BitsToSingle(bits & ~(bits >> 31));
+        }
+
         private struct SphereSphere<TS> : IKernel where TS : struct, ISpheres
         {
             private TS _a;
@@ -169,14 +192,47 @@ namespace ProximityLib.Batch
             }
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            public float Lane(int i)
+            public float Lane(int i) => Value(_a.XAt(i) - _b.X[i], _a.YAt(i) - _b.Y[i], _a.ZAt(i) - _b.Z[i], _a.RAt(i) + _b.R[i], _margin);
+
+            // The scalar lanes over pinned arrays, one loop for paired spheres and one for a broadcast sphere: through
+            // Lane (a field and a bounds check per coordinate) they ran slower on Mono than the scalar API.
+
+            public unsafe void Values(int start, int end, Span<float> result)
             {
-                var dx = _a.XAt(i) - _b.X[i];
-                var dy = _a.YAt(i) - _b.Y[i];
-                var dz = _a.ZAt(i) - _b.Z[i];
+                fixed (float* bx = _b.X, by = _b.Y, bz = _b.Z, br = _b.R, ax = _a.Xs, ay = _a.Ys, az = _a.Zs, ar = _a.Rs)
+                fixed (float* v = result)
+                {
+                    if (ax == null)
+                    {
+                        float x = _a.XAt(0), y = _a.YAt(0), z = _a.ZAt(0), r = _a.RAt(0);
+                        for (int i = start; i < end; i++) v[i] = Value(x - bx[i], y - by[i], z - bz[i], r + br[i], false);
+                    }
+                    else
+                        for (int i = start; i < end; i++) v[i] = Value(ax[i] - bx[i], ay[i] - by[i], az[i] - bz[i], ar[i] + br[i], false);
+                }
+            }
+
+            public unsafe void Verdicts(int start, int end, Span<bool> result)
+            {
+                fixed (float* bx = _b.X, by = _b.Y, bz = _b.Z, br = _b.R, ax = _a.Xs, ay = _a.Ys, az = _a.Zs, ar = _a.Rs)
+                fixed (bool* v = result)
+                {
+                    if (ax == null)
+                    {
+                        float x = _a.XAt(0), y = _a.YAt(0), z = _a.ZAt(0), r = _a.RAt(0);
+                        for (int i = start; i < end; i++) v[i] = Value(x - bx[i], y - by[i], z - bz[i], r + br[i], true) <= 0;
+                    }
+                    else
+                        for (int i = start; i < end; i++) v[i] = Value(ax[i] - bx[i], ay[i] - by[i], az[i] - bz[i], ar[i] + br[i], true) <= 0;
+                }
+            }
+
+            /// <summary>One lane of <see cref="Compute"/> from the center offset and the radii's sum.</summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static float Value(float dx, float dy, float dz, float r, bool margin)
+            {
                 var d2 = dx * dx + dy * dy + dz * dz;
-                var r = _a.RAt(i) + _b.R[i];
-                return _margin ? d2 - r * r : MathF.Sqrt(d2) - r;
+                return margin ? d2 - r * r : MathF.Sqrt(d2) - r;
             }
         }
 
@@ -193,38 +249,66 @@ namespace ProximityLib.Batch
                 new Vector<float>(_b.MaxX, i), new Vector<float>(_b.MaxY, i), new Vector<float>(_b.MaxZ, i), _margin);
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            public float Lane(int i) => _margin
-                ? Margin(_a.XAt(i), _a.YAt(i), _a.ZAt(i), _a.RAt(i), i)
-                : PointBox(_a.XAt(i), _a.YAt(i), _a.ZAt(i), _a.RAt(i), _b.MinX[i], _b.MinY[i], _b.MinZ[i], _b.MaxX[i], _b.MaxY[i], _b.MaxZ[i], false);
+            public float Lane(int i) =>
+                PointBox(_a.XAt(i), _a.YAt(i), _a.ZAt(i), _a.RAt(i), _b.MinX[i], _b.MinY[i], _b.MinZ[i], _b.MaxX[i], _b.MaxY[i], _b.MaxZ[i], _margin);
 
-            /// <summary>
-            /// The margin value of lane i, which only verdicts read. Its sign is the vector lane's, found without the
-            /// clamps' branches where that is cheap, because on Mono they mispredicted on mixed inputs and one-to-many
-            /// verdicts ran 3× slower than the scalar API. For r² = 0 (points) the value d2 is ≤ 0 exactly when every
-            /// axis's squared gap is 0, which two subtractions and comparisons per axis give; otherwise the sums (in the vector order) stop at the
-            /// first axis whose partial sum exceeds r²: the sum only grows, so the sign is the full sum's.
-            /// </summary>
-            [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            private float Margin(float px, float py, float pz, float r, int i)
+            // The scalar lanes over pinned arrays: one loop each for paired spheres, paired points and one shape
+            // broadcast. Through Lane (a field and a bounds check per coordinate) the one-to-many queries ran slower on
+            // Mono than the scalar API.
+
+            public unsafe void Values(int start, int end, Span<float> result)
             {
-                float rr = r * r;
-                if (rr == 0) return Inside(px, _b.MinX[i], _b.MaxX[i]) & Inside(py, _b.MinY[i], _b.MaxY[i]) & Inside(pz, _b.MinZ[i], _b.MaxZ[i]) ? 0 : 1;
-                float dx = px - Runner.Clamp(px, _b.MinX[i], _b.MaxX[i]);
-                float d2 = dx * dx;
-                if (d2 > rr) return d2 - rr;
-                float dy = py - Runner.Clamp(py, _b.MinY[i], _b.MaxY[i]);
-                d2 += dy * dy;
-                if (d2 > rr) return d2 - rr;
-                float dz = pz - Runner.Clamp(pz, _b.MinZ[i], _b.MaxZ[i]);
-                return d2 + dz * dz - rr;
+                fixed (float* lx = _b.MinX, ly = _b.MinY, lz = _b.MinZ, hx = _b.MaxX, hy = _b.MaxY, hz = _b.MaxZ, px = _a.Xs, py = _a.Ys, pz = _a.Zs, pr = _a.Rs)
+                fixed (float* v = result)
+                {
+                    if (px == null)
+                    {
+                        float x = _a.XAt(0), y = _a.YAt(0), z = _a.ZAt(0), r = _a.RAt(0);
+                        for (int i = start; i < end; i++) v[i] = PointBox(x, y, z, r, lx[i], ly[i], lz[i], hx[i], hy[i], hz[i], false);
+                    }
+                    else if (pr == null)
+                        for (int i = start; i < end; i++) v[i] = PointBox(px[i], py[i], pz[i], 0, lx[i], ly[i], lz[i], hx[i], hy[i], hz[i], false);
+                    else
+                        for (int i = start; i < end; i++) v[i] = PointBox(px[i], py[i], pz[i], pr[i], lx[i], ly[i], lz[i], hx[i], hy[i], hz[i], false);
+                }
             }
 
             /// <summary>
-            /// Whether p − clamp(p, lo, hi) squares to 0 in float: the difference is at most 2^-75 in magnitude (its square
-            /// is then at most 2^-150, which rounds to 0, ties to even; any larger float difference squares to 2^-149 or more).
+            /// Whether the margin d2 − r² is ≤ 0 (only overlap queries ask): points by <see cref="Inside"/> (six sign bits,
+            /// measured several times faster on Mono than squaring the gaps), spheres by <see cref="Margin"/>.
+            /// </summary>
+            public unsafe void Verdicts(int start, int end, Span<bool> result)
+            {
+                fixed (float* lx = _b.MinX, ly = _b.MinY, lz = _b.MinZ, hx = _b.MaxX, hy = _b.MaxY, hz = _b.MaxZ, px = _a.Xs, py = _a.Ys, pz = _a.Zs, pr = _a.Rs)
+                fixed (bool* v = result)
+                {
+                    if (px == null)
+                    {
+                        float x = _a.XAt(0), y = _a.YAt(0), z = _a.ZAt(0), r = _a.RAt(0);
+                        if (r * r == 0)
+                            for (int i = start; i < end; i++) v[i] = Inside(x, y, z, lx[i], ly[i], lz[i], hx[i], hy[i], hz[i]);
+                        else
+                            for (int i = start; i < end; i++) v[i] = Margin(x, y, z, r, lx[i], ly[i], lz[i], hx[i], hy[i], hz[i]) <= 0;
+                    }
+                    else if (pr == null)
+                        for (int i = start; i < end; i++) v[i] = Inside(px[i], py[i], pz[i], lx[i], ly[i], lz[i], hx[i], hy[i], hz[i]);
+                    else
+                        for (int i = start; i < end; i++) v[i] = Margin(px[i], py[i], pz[i], pr[i], lx[i], ly[i], lz[i], hx[i], hy[i], hz[i]) <= 0;
+                }
+            }
+
+            /// <summary>
+            /// Whether p − clamp(p, lo, hi) squares to 0 in float on every axis, so d2 = 0 (a point's margin ≤ 0): the
+            /// difference is at most 2^-75 in magnitude (its square is then at most 2^-150, which rounds to 0, ties to
+            /// even; any larger float difference squares to 2^-149 or more). Each bound is read from a sign bit, without
+            /// a branch: (p − lo) + 2^-75 is ≥ 0 exactly when p − lo ≥ −2^-75, since a nonzero exact sum of floats does
+            /// not round to 0 and an exact 0 is +0.
             /// </summary>
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            private static bool Inside(float p, float lo, float hi) => (p - lo >= -SquaresToZero) & (p - hi <= SquaresToZero);
+            private static bool Inside(float px, float py, float pz, float lx, float ly, float lz, float hx, float hy, float hz) =>
+                (BitConverter.SingleToInt32Bits(px - lx + SquaresToZero) | BitConverter.SingleToInt32Bits(SquaresToZero - (px - hx))
+                | BitConverter.SingleToInt32Bits(py - ly + SquaresToZero) | BitConverter.SingleToInt32Bits(SquaresToZero - (py - hy))
+                | BitConverter.SingleToInt32Bits(pz - lz + SquaresToZero) | BitConverter.SingleToInt32Bits(SquaresToZero - (pz - hz))) >= 0;
 
             private const float SquaresToZero = 1f / (1L << 62) / (1 << 13);
         }
@@ -235,6 +319,10 @@ namespace ProximityLib.Batch
             private readonly ObbSet _b;
             private readonly bool _margin;
             public SphereObb(TS a, ObbSet b, bool margin) { _a = a; _b = b; _margin = margin; }
+
+            public void Values(int start, int end, Span<float> result) => Runner.EachLane(ref this, start, end, result);
+
+            public void Verdicts(int start, int end, Span<bool> result) => Runner.EachLane(ref this, start, end, result);
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             public Vector<float> Compute(int i)
@@ -282,6 +370,8 @@ namespace ProximityLib.Batch
             private readonly SegmentSet _b;
             public SegmentSegment(TA a, SegmentSet b) { _a = a; _b = b; }
 
+            public void Verdicts(int start, int end, Span<bool> result) => Runner.EachLane(ref this, start, end, result);
+
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             public Vector<float> Compute(int i)
             {
@@ -319,11 +409,37 @@ namespace ProximityLib.Batch
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             public float Lane(int i)
             {
-                _a.EndsAt(i, out var a0, out var a1);
-                float b0x = _b.AX[i], b0y = _b.AY[i], b0z = _b.AZ[i];
-                float d0x = a1.X - a0.X, d0y = a1.Y - a0.Y, d0z = a1.Z - a0.Z;
-                float d1x = _b.BX[i] - b0x, d1y = _b.BY[i] - b0y, d1z = _b.BZ[i] - b0z;
-                float wx = b0x - a0.X, wy = b0y - a0.Y, wz = b0z - a0.Z;
+                _a.EndsAt(i, out var a);
+                return Distance(a, _b.AX[i], _b.AY[i], _b.AZ[i], _b.BX[i], _b.BY[i], _b.BZ[i]);
+            }
+
+            /// <summary>The scalar lanes over pinned arrays (through <see cref="Lane"/>, one-to-many ran slower on Mono than the scalar API).</summary>
+            public unsafe void Values(int start, int end, Span<float> result)
+            {
+                var set = _a.Set;
+                _a.EndsAt(0, out var a);
+                fixed (float* b0x = _b.AX, b0y = _b.AY, b0z = _b.AZ, b1x = _b.BX, b1y = _b.BY, b1z = _b.BZ)
+                fixed (float* a0x = set?.AX, a0y = set?.AY, a0z = set?.AZ, a1x = set?.BX, a1y = set?.BY, a1z = set?.BZ)
+                fixed (float* v = result)
+                {
+                    for (int i = start; i < end; i++)
+                    {
+                        if (a0x != null)
+                        {
+                            a.AX = a0x[i]; a.AY = a0y[i]; a.AZ = a0z[i]; a.BX = a1x[i]; a.BY = a1y[i]; a.BZ = a1z[i];
+                        }
+                        v[i] = Distance(a, b0x[i], b0y[i], b0z[i], b1x[i], b1y[i], b1z[i]);
+                    }
+                }
+            }
+
+            /// <summary>One lane of <see cref="Compute"/>: segment a against the segment from b0 to b1.</summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static float Distance(in SegmentLane a, float b0x, float b0y, float b0z, float b1x, float b1y, float b1z)
+            {
+                float d0x = a.BX - a.AX, d0y = a.BY - a.AY, d0z = a.BZ - a.AZ;
+                float d1x = b1x - b0x, d1y = b1y - b0y, d1z = b1z - b0z;
+                float wx = b0x - a.AX, wy = b0y - a.AY, wz = b0z - a.AZ;
                 var dd0 = d0x * d0x + d0y * d0y + d0z * d0z;
                 var dd1 = d1x * d1x + d1y * d1y + d1z * d1z;
 
@@ -414,6 +530,8 @@ namespace ProximityLib.Batch
             private readonly ObbSet _b;
             public ObbObb(TA a, ObbSet b) { _a = a; _b = b; }
 
+            public void Values(int start, int end, Span<float> result) => Runner.EachLane(ref this, start, end, result);
+
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             public Vector<float> Compute(int i)
             {
@@ -449,41 +567,77 @@ namespace ProximityLib.Batch
             private static Vector<float> Cross(Vector<float> tl, Vector<float> ra, Vector<float> h1, Vector<float> m1, Vector<float> h2, Vector<float> m2) =>
                 Vector.Abs(tl) - (ra + h1 * Vector.Abs(m1) + h2 * Vector.Abs(m2));
 
-            /// <summary>The axes' separations as <see cref="Compute"/> forms them, stopping at the first that is not ≤ 0.</summary>
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             public float Lane(int i)
             {
-                _a.LoadAt(i, out var ca, out var ax, out var ay, out var az, out var ha);
-                new ObbLanes(_b).LoadAt(i, out var cb, out var bx, out var by, out var bz, out var hb);
-                var tw = new Vector3(cb.X - ca.X, cb.Y - ca.Y, cb.Z - ca.Z);
-                float tx = Dot(tw, ax), ty = Dot(tw, ay), tz = Dot(tw, az);
-                float r00 = Dot(ax, bx), r01 = Dot(ax, by), r02 = Dot(ax, bz);
-                float r10 = Dot(ay, bx), r11 = Dot(ay, by), r12 = Dot(ay, bz);
-                float r20 = Dot(az, bx), r21 = Dot(az, by), r22 = Dot(az, bz);
+                _a.LoadAt(i, out var a);
+                new ObbLanes(_b).LoadAt(i, out var b);
+                return Separation(a, b);
+            }
+
+            /// <summary>
+            /// The scalar verdicts over pinned arrays: through <see cref="Lane"/> (a field and a bounds check for each of
+            /// the 30 floats) the paired verdicts ran slower on Mono than the scalar API.
+            /// </summary>
+            public unsafe void Verdicts(int start, int end, Span<bool> result)
+            {
+                var a = _a.Set;
+                _a.LoadAt(0, out var one);
+                var b = _b;
+                fixed (float* bcx = b.CX, bcy = b.CY, bcz = b.CZ, bxx = b.XX, bxy = b.XY, bxz = b.XZ, byx = b.YX, byy = b.YY, byz = b.YZ,
+                       bzx = b.ZX, bzy = b.ZY, bzz = b.ZZ, bhx = b.HX, bhy = b.HY, bhz = b.HZ)
+                fixed (float* acx = a?.CX, acy = a?.CY, acz = a?.CZ, axx = a?.XX, axy = a?.XY, axz = a?.XZ, ayx = a?.YX, ayy = a?.YY, ayz = a?.YZ,
+                       azx = a?.ZX, azy = a?.ZY, azz = a?.ZZ, ahx = a?.HX, ahy = a?.HY, ahz = a?.HZ)
+                fixed (bool* v = result)
+                {
+                    ObbLane bi;
+                    for (int i = start; i < end; i++)
+                    {
+                        bi.CX = bcx[i]; bi.CY = bcy[i]; bi.CZ = bcz[i]; bi.XX = bxx[i]; bi.XY = bxy[i]; bi.XZ = bxz[i];
+                        bi.YX = byx[i]; bi.YY = byy[i]; bi.YZ = byz[i]; bi.ZX = bzx[i]; bi.ZY = bzy[i]; bi.ZZ = bzz[i];
+                        bi.HX = bhx[i]; bi.HY = bhy[i]; bi.HZ = bhz[i];
+                        if (acx != null)
+                        {
+                            one.CX = acx[i]; one.CY = acy[i]; one.CZ = acz[i]; one.XX = axx[i]; one.XY = axy[i]; one.XZ = axz[i];
+                            one.YX = ayx[i]; one.YY = ayy[i]; one.YZ = ayz[i]; one.ZX = azx[i]; one.ZY = azy[i]; one.ZZ = azz[i];
+                            one.HX = ahx[i]; one.HY = ahy[i]; one.HZ = ahz[i];
+                        }
+                        v[i] = Separation(one, bi) <= 0;
+                    }
+                }
+            }
+
+            /// <summary>The axes' separations as <see cref="Compute"/> forms them, stopping at the first that is not ≤ 0.</summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static float Separation(in ObbLane a, in ObbLane b)
+            {
+                float twx = b.CX - a.CX, twy = b.CY - a.CY, twz = b.CZ - a.CZ;
+                float tx = twx * a.XX + twy * a.XY + twz * a.XZ, ty = twx * a.YX + twy * a.YY + twz * a.YZ, tz = twx * a.ZX + twy * a.ZY + twz * a.ZZ;
+                float r00 = a.XX * b.XX + a.XY * b.XY + a.XZ * b.XZ, r01 = a.XX * b.YX + a.XY * b.YY + a.XZ * b.YZ, r02 = a.XX * b.ZX + a.XY * b.ZY + a.XZ * b.ZZ;
+                float r10 = a.YX * b.XX + a.YY * b.XY + a.YZ * b.XZ, r11 = a.YX * b.YX + a.YY * b.YY + a.YZ * b.YZ, r12 = a.YX * b.ZX + a.YY * b.ZY + a.YZ * b.ZZ;
+                float r20 = a.ZX * b.XX + a.ZY * b.XY + a.ZZ * b.XZ, r21 = a.ZX * b.YX + a.ZY * b.YY + a.ZZ * b.YZ, r22 = a.ZX * b.ZX + a.ZY * b.ZY + a.ZZ * b.ZZ;
                 float q00 = Math.Abs(r00), q01 = Math.Abs(r01), q02 = Math.Abs(r02);
                 float q10 = Math.Abs(r10), q11 = Math.Abs(r11), q12 = Math.Abs(r12);
                 float q20 = Math.Abs(r20), q21 = Math.Abs(r21), q22 = Math.Abs(r22);
+                float hax = a.HX, hay = a.HY, haz = a.HZ, hbx = b.HX, hby = b.HY, hbz = b.HZ;
 
                 float sep;
-                if (!((sep = Math.Abs(tx) - (ha.X + hb.X * q00 + hb.Y * q01 + hb.Z * q02)) <= 0)) return sep;
-                if (!((sep = Math.Abs(ty) - (ha.Y + hb.X * q10 + hb.Y * q11 + hb.Z * q12)) <= 0)) return sep;
-                if (!((sep = Math.Abs(tz) - (ha.Z + hb.X * q20 + hb.Y * q21 + hb.Z * q22)) <= 0)) return sep;
-                if (!((sep = Math.Abs(tx * r00 + ty * r10 + tz * r20) - (ha.X * q00 + ha.Y * q10 + ha.Z * q20 + hb.X)) <= 0)) return sep;
-                if (!((sep = Math.Abs(tx * r01 + ty * r11 + tz * r21) - (ha.X * q01 + ha.Y * q11 + ha.Z * q21 + hb.Y)) <= 0)) return sep;
-                if (!((sep = Math.Abs(tx * r02 + ty * r12 + tz * r22) - (ha.X * q02 + ha.Y * q12 + ha.Z * q22 + hb.Z)) <= 0)) return sep;
-                if (!((sep = Cross(tz * r10 - ty * r20, ha.Y * q20 + ha.Z * q10, hb.Y, r11 * r20 - r21 * r10, hb.Z, r12 * r20 - r22 * r10)) <= 0)) return sep;
-                if (!((sep = Cross(tz * r11 - ty * r21, ha.Y * q21 + ha.Z * q11, hb.X, r10 * r21 - r20 * r11, hb.Z, r12 * r21 - r22 * r11)) <= 0)) return sep;
-                if (!((sep = Cross(tz * r12 - ty * r22, ha.Y * q22 + ha.Z * q12, hb.X, r10 * r22 - r20 * r12, hb.Y, r11 * r22 - r21 * r12)) <= 0)) return sep;
-                if (!((sep = Cross(tx * r20 - tz * r00, ha.X * q20 + ha.Z * q00, hb.Y, r01 * r20 - r21 * r00, hb.Z, r02 * r20 - r22 * r00)) <= 0)) return sep;
-                if (!((sep = Cross(tx * r21 - tz * r01, ha.X * q21 + ha.Z * q01, hb.X, r00 * r21 - r20 * r01, hb.Z, r02 * r21 - r22 * r01)) <= 0)) return sep;
-                if (!((sep = Cross(tx * r22 - tz * r02, ha.X * q22 + ha.Z * q02, hb.X, r00 * r22 - r20 * r02, hb.Y, r01 * r22 - r21 * r02)) <= 0)) return sep;
-                if (!((sep = Cross(ty * r00 - tx * r10, ha.X * q10 + ha.Y * q00, hb.Y, r11 * r00 - r01 * r10, hb.Z, r12 * r00 - r02 * r10)) <= 0)) return sep;
-                if (!((sep = Cross(ty * r01 - tx * r11, ha.X * q11 + ha.Y * q01, hb.X, r10 * r01 - r00 * r11, hb.Z, r12 * r01 - r02 * r11)) <= 0)) return sep;
-                return Cross(ty * r02 - tx * r12, ha.X * q12 + ha.Y * q02, hb.X, r10 * r02 - r00 * r12, hb.Y, r11 * r02 - r01 * r12);
+                if (!((sep = Math.Abs(tx) - (hax + hbx * q00 + hby * q01 + hbz * q02)) <= 0)) return sep;
+                if (!((sep = Math.Abs(ty) - (hay + hbx * q10 + hby * q11 + hbz * q12)) <= 0)) return sep;
+                if (!((sep = Math.Abs(tz) - (haz + hbx * q20 + hby * q21 + hbz * q22)) <= 0)) return sep;
+                if (!((sep = Math.Abs(tx * r00 + ty * r10 + tz * r20) - (hax * q00 + hay * q10 + haz * q20 + hbx)) <= 0)) return sep;
+                if (!((sep = Math.Abs(tx * r01 + ty * r11 + tz * r21) - (hax * q01 + hay * q11 + haz * q21 + hby)) <= 0)) return sep;
+                if (!((sep = Math.Abs(tx * r02 + ty * r12 + tz * r22) - (hax * q02 + hay * q12 + haz * q22 + hbz)) <= 0)) return sep;
+                if (!((sep = Cross(tz * r10 - ty * r20, hay * q20 + haz * q10, hby, r11 * r20 - r21 * r10, hbz, r12 * r20 - r22 * r10)) <= 0)) return sep;
+                if (!((sep = Cross(tz * r11 - ty * r21, hay * q21 + haz * q11, hbx, r10 * r21 - r20 * r11, hbz, r12 * r21 - r22 * r11)) <= 0)) return sep;
+                if (!((sep = Cross(tz * r12 - ty * r22, hay * q22 + haz * q12, hbx, r10 * r22 - r20 * r12, hby, r11 * r22 - r21 * r12)) <= 0)) return sep;
+                if (!((sep = Cross(tx * r20 - tz * r00, hax * q20 + haz * q00, hby, r01 * r20 - r21 * r00, hbz, r02 * r20 - r22 * r00)) <= 0)) return sep;
+                if (!((sep = Cross(tx * r21 - tz * r01, hax * q21 + haz * q01, hbx, r00 * r21 - r20 * r01, hbz, r02 * r21 - r22 * r01)) <= 0)) return sep;
+                if (!((sep = Cross(tx * r22 - tz * r02, hax * q22 + haz * q02, hbx, r00 * r22 - r20 * r02, hby, r01 * r22 - r21 * r02)) <= 0)) return sep;
+                if (!((sep = Cross(ty * r00 - tx * r10, hax * q10 + hay * q00, hby, r11 * r00 - r01 * r10, hbz, r12 * r00 - r02 * r10)) <= 0)) return sep;
+                if (!((sep = Cross(ty * r01 - tx * r11, hax * q11 + hay * q01, hbx, r10 * r01 - r00 * r11, hbz, r12 * r01 - r02 * r11)) <= 0)) return sep;
+                return Cross(ty * r02 - tx * r12, hax * q12 + hay * q02, hbx, r10 * r02 - r00 * r12, hby, r11 * r02 - r01 * r12);
             }
-
-            [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            private static float Dot(Vector3 a, Vector3 b) => a.X * b.X + a.Y * b.Y + a.Z * b.Z;
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             private static float Cross(float tl, float ra, float h1, float m1, float h2, float m2) =>
@@ -496,6 +650,8 @@ namespace ProximityLib.Batch
             private readonly AabbSet _b;
             public AabbAabb(TA a, AabbSet b) { _a = a; _b = b; }
 
+            public void Values(int start, int end, Span<float> result) => Runner.EachLane(ref this, start, end, result);
+
             /// <summary>The largest per-axis gap: ≤ 0 exactly when the boxes touch or overlap (paper Eq. 18).</summary>
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             public Vector<float> Compute(int i)
@@ -506,20 +662,50 @@ namespace ProximityLib.Batch
                 return Runner.MaxNative(gx, Runner.MaxNative(gy, gz));
             }
 
-            /// <summary>
-            /// −1 where every gap is ≤ 0, else 1: a gap lo − hi of two floats is ≤ 0 exactly when lo ≤ hi (a difference of
-            /// floats is zero only when they are equal), so the six comparisons give the vector verdict. They are joined
-            /// without short-circuit: on Mono, branching on each one mispredicted on mixed inputs and made the one-to-many
-            /// verdicts slower than the scalar API.
-            /// </summary>
+            /// <summary>−1 where the boxes touch or overlap, else 1 (<see cref="Touch"/>).</summary>
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             public float Lane(int i)
             {
                 _a.CornersAt(i, out var minX, out var minY, out var minZ, out var maxX, out var maxY, out var maxZ);
-                bool touch = (_b.MinX[i] <= maxX) & (minX <= _b.MaxX[i]) & (_b.MinY[i] <= maxY) & (minY <= _b.MaxY[i])
-                    & (_b.MinZ[i] <= maxZ) & (minZ <= _b.MaxZ[i]);
-                return touch ? -1 : 1;
+                return Touch(minX, minY, minZ, maxX, maxY, maxZ, _b.MinX[i], _b.MinY[i], _b.MinZ[i], _b.MaxX[i], _b.MaxY[i], _b.MaxZ[i]) ? -1 : 1;
             }
+
+            /// <summary>
+            /// The scalar verdicts over pinned arrays, one loop for paired sets and one for a broadcast box: reading the
+            /// sets through <see cref="Lane"/> (a field and a bounds check per coordinate) made them slower on Mono than
+            /// the scalar API, and so did branching on each axis (mispredicted on mixed inputs).
+            /// </summary>
+            public unsafe void Verdicts(int start, int end, Span<bool> result)
+            {
+                fixed (float* bx0 = _b.MinX, by0 = _b.MinY, bz0 = _b.MinZ, bx1 = _b.MaxX, by1 = _b.MaxY, bz1 = _b.MaxZ)
+                fixed (bool* r = result)
+                {
+                    var set = _a.Set;
+                    if (set != null)
+                    {
+                        fixed (float* ax0 = set.MinX, ay0 = set.MinY, az0 = set.MinZ, ax1 = set.MaxX, ay1 = set.MaxY, az1 = set.MaxZ)
+                            for (int i = start; i < end; i++)
+                                r[i] = Touch(ax0[i], ay0[i], az0[i], ax1[i], ay1[i], az1[i], bx0[i], by0[i], bz0[i], bx1[i], by1[i], bz1[i]);
+                    }
+                    else
+                    {
+                        _a.CornersAt(0, out var minX, out var minY, out var minZ, out var maxX, out var maxY, out var maxZ);
+                        for (int i = start; i < end; i++)
+                            r[i] = Touch(minX, minY, minZ, maxX, maxY, maxZ, bx0[i], by0[i], bz0[i], bx1[i], by1[i], bz1[i]);
+                    }
+                }
+            }
+
+            /// <summary>
+            /// Whether every gap lo − hi of <see cref="Compute"/> is ≤ 0, read from the sign bits of hi − lo without a
+            /// branch: a difference of floats is 0 only when they are equal, and never −0 then, because the shapes store
+            /// no −0 (−0 − +0 would be −0); its sign survives overflow to ±∞. So these are the vector lanes' verdicts.
+            /// </summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static bool Touch(float ax0, float ay0, float az0, float ax1, float ay1, float az1, float bx0, float by0, float bz0, float bx1, float by1, float bz1) =>
+                (BitConverter.SingleToInt32Bits(ax1 - bx0) | BitConverter.SingleToInt32Bits(bx1 - ax0)
+                | BitConverter.SingleToInt32Bits(ay1 - by0) | BitConverter.SingleToInt32Bits(by1 - ay0)
+                | BitConverter.SingleToInt32Bits(az1 - bz0) | BitConverter.SingleToInt32Bits(bz1 - az0)) >= 0;
         }
     }
 }

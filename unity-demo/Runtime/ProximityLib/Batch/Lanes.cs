@@ -1,5 +1,6 @@
 // Copied from src/ProximityLib/Batch/Lanes.cs by tests/ProximityLib.UnityCheck (sync): edit the original, not this copy.
 #nullable enable
+using System;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
@@ -20,12 +21,21 @@ namespace ProximityLib.Batch
         float YAt(int i);
         float ZAt(int i);
         float RAt(int i);
+        /// <summary>The centers' arrays for paired lanes (null for one shape broadcast), and the radii's (null for points).</summary>
+        float[]? Xs { get; }
+        float[]? Ys { get; }
+        float[]? Zs { get; }
+        float[]? Rs { get; }
     }
 
     internal readonly struct SphereLanes : ISpheres
     {
         private readonly SphereSet _s;
         public SphereLanes(SphereSet s) { _s = s; }
+        public float[]? Xs => _s.X;
+        public float[]? Ys => _s.Y;
+        public float[]? Zs => _s.Z;
+        public float[]? Rs => _s.R;
         public Vector<float> X(int i) => new Vector<float>(_s.X, i);
         public Vector<float> Y(int i) => new Vector<float>(_s.Y, i);
         public Vector<float> Z(int i) => new Vector<float>(_s.Z, i);
@@ -41,6 +51,10 @@ namespace ProximityLib.Batch
     {
         private readonly PointSet _s;
         public PointLanes(PointSet s) { _s = s; }
+        public float[]? Xs => _s.X;
+        public float[]? Ys => _s.Y;
+        public float[]? Zs => _s.Z;
+        public float[]? Rs => null;
         public Vector<float> X(int i) => new Vector<float>(_s.X, i);
         public Vector<float> Y(int i) => new Vector<float>(_s.Y, i);
         public Vector<float> Z(int i) => new Vector<float>(_s.Z, i);
@@ -61,6 +75,10 @@ namespace ProximityLib.Batch
             _x = new Vector<float>(c.X); _y = new Vector<float>(c.Y); _z = new Vector<float>(c.Z); _r = new Vector<float>(r);
             _c = c; _radius = r;
         }
+        public float[]? Xs => null;
+        public float[]? Ys => null;
+        public float[]? Zs => null;
+        public float[]? Rs => null;
         public Vector<float> X(int i) => _x;
         public Vector<float> Y(int i) => _y;
         public Vector<float> Z(int i) => _z;
@@ -81,12 +99,15 @@ namespace ProximityLib.Batch
         Vector<float> MaxZ(int i);
         /// <summary>Box i's corners (min x, y, z, max x, y, z) for the scalar lanes.</summary>
         void CornersAt(int i, out float minX, out float minY, out float minZ, out float maxX, out float maxY, out float maxZ);
+        /// <summary>The set for paired lanes, null for one box broadcast.</summary>
+        AabbSet? Set { get; }
     }
 
     internal readonly struct AabbLanes : IAabbs
     {
         private readonly AabbSet _s;
         public AabbLanes(AabbSet s) { _s = s; }
+        public AabbSet? Set => _s;
         public Vector<float> MinX(int i) => new Vector<float>(_s.MinX, i);
         public Vector<float> MinY(int i) => new Vector<float>(_s.MinY, i);
         public Vector<float> MinZ(int i) => new Vector<float>(_s.MinZ, i);
@@ -111,6 +132,7 @@ namespace ProximityLib.Batch
             _maxX = new Vector<float>(max.X); _maxY = new Vector<float>(max.Y); _maxZ = new Vector<float>(max.Z);
             _min = min; _max = max;
         }
+        public AabbSet? Set => null;
         public Vector<float> MinX(int i) => _minX;
         public Vector<float> MinY(int i) => _minY;
         public Vector<float> MinZ(int i) => _minZ;
@@ -134,7 +156,15 @@ namespace ProximityLib.Batch
         Vector<float> BY(int i);
         Vector<float> BZ(int i);
         /// <summary>Segment i's endpoints for the scalar lanes.</summary>
-        void EndsAt(int i, out Vector3 a, out Vector3 b);
+        void EndsAt(int i, out SegmentLane s);
+        /// <summary>The set for paired lanes, null for one segment broadcast.</summary>
+        SegmentSet? Set { get; }
+    }
+
+    /// <summary>One segment's endpoints in scalar floats, for the scalar lanes.</summary>
+    internal struct SegmentLane
+    {
+        public float AX, AY, AZ, BX, BY, BZ;
     }
 
     internal readonly struct SegmentLanes : ISegments
@@ -149,22 +179,23 @@ namespace ProximityLib.Batch
         public Vector<float> BZ(int i) => new Vector<float>(_s.BZ, i);
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public void EndsAt(int i, out Vector3 a, out Vector3 b)
+        public void EndsAt(int i, out SegmentLane s)
         {
-            a = new Vector3(_s.AX[i], _s.AY[i], _s.AZ[i]);
-            b = new Vector3(_s.BX[i], _s.BY[i], _s.BZ[i]);
+            s.AX = _s.AX[i]; s.AY = _s.AY[i]; s.AZ = _s.AZ[i]; s.BX = _s.BX[i]; s.BY = _s.BY[i]; s.BZ = _s.BZ[i];
         }
+
+        public SegmentSet? Set => _s;
     }
 
     internal readonly struct SegmentBroadcast : ISegments
     {
         private readonly Vector<float> _ax, _ay, _az, _bx, _by, _bz;
-        private readonly Vector3 _a, _b;
+        private readonly SegmentLane _one;
         public SegmentBroadcast(Vector3 a, Vector3 b)
         {
             _ax = new Vector<float>(a.X); _ay = new Vector<float>(a.Y); _az = new Vector<float>(a.Z);
             _bx = new Vector<float>(b.X); _by = new Vector<float>(b.Y); _bz = new Vector<float>(b.Z);
-            _a = a; _b = b;
+            _one = new SegmentLane { AX = a.X, AY = a.Y, AZ = a.Z, BX = b.X, BY = b.Y, BZ = b.Z };
         }
         public Vector<float> AX(int i) => _ax;
         public Vector<float> AY(int i) => _ay;
@@ -174,10 +205,9 @@ namespace ProximityLib.Batch
         public Vector<float> BZ(int i) => _bz;
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public void EndsAt(int i, out Vector3 a, out Vector3 b)
-        {
-            a = _a; b = _b;
-        }
+        public void EndsAt(int i, out SegmentLane s) => s = _one;
+
+        public SegmentSet? Set => null;
     }
 
     /// <summary>Oriented boxes lane by lane: center, axes (row-wise: X axis, Y axis, Z axis) and half-extents.</summary>
@@ -185,7 +215,15 @@ namespace ProximityLib.Batch
     {
         void Load(int i, out V3 center, out V3 x, out V3 y, out V3 z, out V3 half);
         /// <summary>Box i for the scalar lanes.</summary>
-        void LoadAt(int i, out Vector3 center, out Vector3 x, out Vector3 y, out Vector3 z, out Vector3 half);
+        void LoadAt(int i, out ObbLane box);
+        /// <summary>The set for paired lanes, null for one box broadcast.</summary>
+        ObbSet? Set { get; }
+    }
+
+    /// <summary>One oriented box in scalar floats (center, axes row-wise, half-extents), for the scalar lanes.</summary>
+    internal struct ObbLane
+    {
+        public float CX, CY, CZ, XX, XY, XZ, YX, YY, YZ, ZX, ZY, ZZ, HX, HY, HZ;
     }
 
     /// <summary>Three lanes of coordinates.</summary>
@@ -214,25 +252,31 @@ namespace ProximityLib.Batch
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public void LoadAt(int i, out Vector3 center, out Vector3 x, out Vector3 y, out Vector3 z, out Vector3 half)
+        public void LoadAt(int i, out ObbLane box)
         {
-            center = new Vector3(_s.CX[i], _s.CY[i], _s.CZ[i]);
-            x = new Vector3(_s.XX[i], _s.XY[i], _s.XZ[i]);
-            y = new Vector3(_s.YX[i], _s.YY[i], _s.YZ[i]);
-            z = new Vector3(_s.ZX[i], _s.ZY[i], _s.ZZ[i]);
-            half = new Vector3(_s.HX[i], _s.HY[i], _s.HZ[i]);
+            box.CX = _s.CX[i]; box.CY = _s.CY[i]; box.CZ = _s.CZ[i];
+            box.XX = _s.XX[i]; box.XY = _s.XY[i]; box.XZ = _s.XZ[i];
+            box.YX = _s.YX[i]; box.YY = _s.YY[i]; box.YZ = _s.YZ[i];
+            box.ZX = _s.ZX[i]; box.ZY = _s.ZY[i]; box.ZZ = _s.ZZ[i];
+            box.HX = _s.HX[i]; box.HY = _s.HY[i]; box.HZ = _s.HZ[i];
         }
+
+        public ObbSet? Set => _s;
     }
 
     internal readonly struct ObbBroadcast : IObbs
     {
         private readonly V3 _c, _x, _y, _z, _h;
-        private readonly Vector3 _center, _axisX, _axisY, _axisZ, _half;
+        private readonly ObbLane _box;
         public ObbBroadcast(Obb3 b)
         {
-            _center = b.Center; _axisX = b.AxisX; _axisY = b.AxisY; _axisZ = b.AxisZ; _half = b.HalfExtents;
-            _c = V3.Broadcast(_center); _x = V3.Broadcast(_axisX); _y = V3.Broadcast(_axisY); _z = V3.Broadcast(_axisZ);
-            _h = V3.Broadcast(_half);
+            Vector3 c = b.Center, x = b.AxisX, y = b.AxisY, z = b.AxisZ, h = b.HalfExtents;
+            _c = V3.Broadcast(c); _x = V3.Broadcast(x); _y = V3.Broadcast(y); _z = V3.Broadcast(z); _h = V3.Broadcast(h);
+            _box = new ObbLane
+            {
+                CX = c.X, CY = c.Y, CZ = c.Z, XX = x.X, XY = x.Y, XZ = x.Z, YX = y.X, YY = y.Y, YZ = y.Z,
+                ZX = z.X, ZY = z.Y, ZZ = z.Z, HX = h.X, HY = h.Y, HZ = h.Z,
+            };
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -242,10 +286,9 @@ namespace ProximityLib.Batch
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public void LoadAt(int i, out Vector3 center, out Vector3 x, out Vector3 y, out Vector3 z, out Vector3 half)
-        {
-            center = _center; x = _axisX; y = _axisY; z = _axisZ; half = _half;
-        }
+        public void LoadAt(int i, out ObbLane box) => box = _box;
+
+        public ObbSet? Set => null;
     }
 
     /// <summary>
@@ -265,5 +308,15 @@ namespace ProximityLib.Batch
         /// whether the value is ≤ 0 agrees.
         /// </summary>
         float Lane(int i);
+
+        /// <summary>
+        /// <see cref="Lane"/> for lanes start to end − 1 into result, where <see cref="Vector{T}"/> is not
+        /// hardware-accelerated. A kernel whose <see cref="Lane"/> reads its sets through bounds-checked field loads
+        /// on every lane (slow on Mono) writes its own loop over pinned arrays; the rest call Runner.EachLane.
+        /// </summary>
+        void Values(int start, int end, Span<float> result);
+
+        /// <summary>Whether <see cref="Lane"/> is ≤ 0 for lanes start to end − 1, as <see cref="Values"/>.</summary>
+        void Verdicts(int start, int end, Span<bool> result);
     }
 }

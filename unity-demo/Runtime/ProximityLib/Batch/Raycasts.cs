@@ -67,6 +67,10 @@ namespace ProximityLib.Batch
             private readonly SphereSet _b;
             public RaySpheres(RayLanes r, SphereSet b) { _r = r; _b = b; }
 
+            public void Values(int start, int end, Span<float> result) => Runner.EachLane(ref this, start, end, result);
+
+            public void Verdicts(int start, int end, Span<bool> result) => Runner.EachLane(ref this, start, end, result);
+
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             public Vector<float> Compute(int i)
             {
@@ -117,6 +121,10 @@ namespace ProximityLib.Batch
                 _nearY = r.DY < 0 ? b.MaxY : b.MinY; _farY = r.DY < 0 ? b.MinY : b.MaxY;
                 _nearZ = r.DZ < 0 ? b.MaxZ : b.MinZ; _farZ = r.DZ < 0 ? b.MinZ : b.MaxZ;
             }
+
+            public void Values(int start, int end, Span<float> result) => Runner.EachLane(ref this, start, end, result);
+
+            public void Verdicts(int start, int end, Span<bool> result) => Runner.EachLane(ref this, start, end, result);
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             public Vector<float> Compute(int i)
@@ -204,6 +212,10 @@ namespace ProximityLib.Batch
                 _ox = r.O(kx); _oy = r.O(ky); _oz = r.O(kz);
                 _dz = r.D(kz); _sx = r.D(kx) / _dz; _sy = r.D(ky) / _dz;
             }
+
+            public void Values(int start, int end, Span<float> result) => Runner.EachLane(ref this, start, end, result);
+
+            public void Verdicts(int start, int end, Span<bool> result) => Runner.EachLane(ref this, start, end, result);
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             public Vector<float> Compute(int i)

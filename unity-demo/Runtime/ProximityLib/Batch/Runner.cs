@@ -40,7 +40,7 @@ namespace ProximityLib.Batch
             int i = start;
             if (!Vectorized)
             {
-                for (; i < end; i++) result[i] = kernel.Lane(i);
+                kernel.Values(start, end, result);
                 return;
             }
             int w = Vector<float>.Count;
@@ -60,7 +60,7 @@ namespace ProximityLib.Batch
             int i = start;
             if (!Vectorized)
             {
-                for (; i < end; i++) result[i] = kernel.Lane(i) <= 0;
+                kernel.Verdicts(start, end, result);
                 return;
             }
             int w = Vector<float>.Count;
@@ -83,6 +83,18 @@ namespace ProximityLib.Batch
                 int n = Math.Min(w, end - i);
                 for (int j = 0; j < n; j++) result[i + j] = lanes[j] <= 0;
             }
+        }
+
+        /// <summary>The scalar lanes one <see cref="IKernel.Lane"/> call each, for kernels without a loop of their own.</summary>
+        internal static void EachLane<TK>(ref TK kernel, int start, int end, Span<float> result) where TK : struct, IKernel
+        {
+            for (int i = start; i < end; i++) result[i] = kernel.Lane(i);
+        }
+
+        /// <summary>The scalar verdicts one <see cref="IKernel.Lane"/> call each.</summary>
+        internal static void EachLane<TK>(ref TK kernel, int start, int end, Span<bool> result) where TK : struct, IKernel
+        {
+            for (int i = start; i < end; i++) result[i] = kernel.Lane(i) <= 0;
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -93,9 +93,9 @@ namespace ProximityLib
     {
         /// <summary>Whether an OBB and an OBB (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb3 a, Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Obb3 a, in Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an OBB and an OBB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb2 a, Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Obb2 a, in Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
     }
 }

@@ -107,10 +107,10 @@ namespace ProximityLib
         public static DistanceResult2 Between(Segment2 a, Vector2 b) => Between(b, a).Swapped();
         /// <summary>Signed closest distance between a point and a segment (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, Segment3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector3 a, Segment3 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
+        public static float Distance(Vector3 a, in Segment3 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
         /// <summary>Signed closest distance between a segment and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Segment3 a, Vector3 b) => Distance(b, a);
+        public static float Distance(in Segment3 a, Vector3 b) => Distance(b, a);
         /// <summary>Signed closest distance between a point and a segment (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, Segment2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(Vector2 a, Segment2 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
@@ -123,10 +123,10 @@ namespace ProximityLib
     {
         /// <summary>Whether a point and a segment (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3 a, Segment3 b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner, out _);
+        public static bool Overlaps(Vector3 a, in Segment3 b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner, out _);
         /// <summary>Whether a segment and a point (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment3 a, Vector3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Segment3 a, Vector3 b) => Overlaps(b, a);
         /// <summary>Whether a point and a segment (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Vector2 a, Segment2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner, out _);
