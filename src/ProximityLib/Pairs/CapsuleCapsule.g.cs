@@ -75,25 +75,25 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a capsule and a capsule (3D), computed in double: negative when they overlap (depth = sum of the radii − distance of the axes: their Minkowski difference is flat); witnesses pushed by each radius along the unit residual of the axes' closest pair, for meeting axes along the common normal (parallel axes: <c>AnyPerpendicular</c> of the first direction); parallel overlapping axes: the segment kernel's first endpoint minimum; computed on the canonically ordered pair (src/ProximityLib/Double/Order.cs, then the radius), so the same in either argument order; ParameterA/B are the axis parameters.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Capsule3 a, Capsule3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Capsule3 a, in Capsule3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a capsule and a capsule (2D), computed in double: negative when they overlap; separated axes give their distance less both radii; crossing axes give −(both radii + the crossing depth of the axes, the smallest push of one axis off the other along a face normal of their Minkowski difference), the witnesses an endpoint and its image across that face pushed by the radii; computed on the canonically ordered pair (src/ProximityLib/Double/Order.cs, then the radius), so the same in either argument order; ParameterA/B are the axis parameters.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Capsule2 a, Capsule2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
-        /// <summary>Signed closest distance between a capsule and a capsule (3D), computed in double, without the witness points: the Distance of <see cref="Between(Capsule3, Capsule3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Capsule2 a, in Capsule2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        /// <summary>Signed closest distance between a capsule and a capsule (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Capsule3, in Capsule3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Capsule3 a, Capsule3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
-        /// <summary>Signed closest distance between a capsule and a capsule (2D), computed in double, without the witness points: the Distance of <see cref="Between(Capsule2, Capsule2)"/>, bit for bit.</summary>
+        public static float Distance(in Capsule3 a, in Capsule3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        /// <summary>Signed closest distance between a capsule and a capsule (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Capsule2, in Capsule2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Capsule2 a, Capsule2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Capsule2 a, in Capsule2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a capsule and a capsule (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule3 a, Capsule3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Capsule3 a, in Capsule3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a capsule and a capsule (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule2 a, Capsule2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Capsule2 a, in Capsule2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
     }
 }

@@ -99,37 +99,37 @@ namespace ProximityLib
         public static DistanceResult3 Between(HalfSpace a, Capsule3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a capsule and a half-plane (2D), computed in double: the lower axis end's height Normal·(end − Point) less the radius, negative when overlapping; witnesses that end moved down by the radius (end − Normal·radius, ParameterA 0 or 1) and the end's foot on the boundary. An axis parallel to the boundary is witnessed at Start.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Capsule2 a, HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Capsule2 a, in HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a half-plane and a capsule (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Capsule2 b) => Between(b, a).Swapped();
+        public static DistanceResult2 Between(in HalfPlane a, in Capsule2 b) => Between(b, a).Swapped();
         /// <summary>Signed closest distance between a capsule and a half-space (3D), computed in double, without the witness points: the Distance of <see cref="Between(Capsule3, HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Capsule3 a, HalfSpace b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Capsule3 a, in HalfSpace b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a half-space and a capsule (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfSpace a, Capsule3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a capsule and a half-plane (2D), computed in double, without the witness points: the Distance of <see cref="Between(Capsule2, HalfPlane)"/>, bit for bit.</summary>
+        public static float Distance(in HalfSpace a, in Capsule3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a capsule and a half-plane (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Capsule2, in HalfPlane)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Capsule2 a, HalfPlane b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Capsule2 a, in HalfPlane b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a half-plane and a capsule (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfPlane a, Capsule2 b) => Distance(b, a);
+        public static float Distance(in HalfPlane a, in Capsule2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a capsule and a half-space (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule3 a, HalfSpace b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Capsule3 a, in HalfSpace b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a half-space and a capsule (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, Capsule3 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfSpace a, in Capsule3 b) => Overlaps(b, a);
         /// <summary>Whether a capsule and a half-plane (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule2 a, HalfPlane b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Capsule2 a, in HalfPlane b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a half-plane and a capsule (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, Capsule2 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfPlane a, in Capsule2 b) => Overlaps(b, a);
     }
 }

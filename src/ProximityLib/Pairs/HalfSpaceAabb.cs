@@ -9,18 +9,18 @@ namespace ProximityLib.Double
         internal static DistanceResult3 Core(HalfSpace a, Aabb3 b, out bool inRange) => Kernels.HalfSpaceBox(a.Normal, a.Point, b.ToBox(), out inRange);
         /// <summary>Closest distance between a half-plane and an AABB (2D): the height Normal·(x − Point) of the box's lowest point x, negative when the box enters (minus the depth); witnesses the foot of that point on the boundary and the point itself. Where a face or edge is parallel to the boundary the point is the middle of the lowest face or edge. Algorithm: support point of the box along −Normal in the box frame (Ericson RTCD §5.2.3), measured from the stored boundary point.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult2 Core(HalfPlane a, Aabb2 b, out bool inRange) => Kernels.HalfSpaceBox(a.Normal.To3(), a.Point.To3(), b.ToBox(), out inRange).To2();
+        internal static DistanceResult2 Core(in HalfPlane a, in Aabb2 b, out bool inRange) => Kernels.HalfSpaceBox(a.Normal.To3(), a.Point.To3(), b.ToBox(), out inRange).To2();
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static double DistanceCore(HalfSpace a, Aabb3 b, out bool inRange) => Kernels.HalfSpaceBoxDistance(a.Normal, a.Point, b.ToBox(), out inRange);
+        internal static double DistanceCore(in HalfSpace a, in Aabb3 b, out bool inRange) => Kernels.HalfSpaceBoxDistance(a.Normal, a.Point, b.ToBox(), out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static double DistanceCore(HalfPlane a, Aabb2 b, out bool inRange) => Kernels.HalfSpaceBoxDistance(a.Normal.To3(), a.Point.To3(), b.ToBox(), out inRange);
+        internal static double DistanceCore(in HalfPlane a, in Aabb2 b, out bool inRange) => Kernels.HalfSpaceBoxDistance(a.Normal.To3(), a.Point.To3(), b.ToBox(), out inRange);
     }
 
     public static partial class ProximityQuery
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(HalfSpace a, Aabb3 b, out bool inRange) => ClosestDistance.DistanceCore(a, b, out inRange) <= 0;
+        internal static bool Core(in HalfSpace a, in Aabb3 b, out bool inRange) => ClosestDistance.DistanceCore(a, b, out inRange) <= 0;
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(HalfPlane a, Aabb2 b, out bool inRange) => ClosestDistance.DistanceCore(a, b, out inRange) <= 0;
+        internal static bool Core(in HalfPlane a, in Aabb2 b, out bool inRange) => ClosestDistance.DistanceCore(a, b, out inRange) <= 0;
     }
 }

@@ -75,16 +75,16 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a half-space and a half-space (3D), computed in double: exactly opposite normals: the signed gap a.Normal·(b.Point − a.Point) between the parallel boundaries, negative when they overlap (minus the depth), witnessed by the feet on the two boundaries of the midpoint of the stored points. Any other normals: the intersection is unbounded, Distance = −∞ (DistanceSquared 0) and both witnesses are one common point: the midpoint of the stored points when each lies in the other half-space, else the stored point that lies in the other, else a point of both near where the boundaries meet (the midpoint, should that lie beyond the range of the API's precision: float's for the float API). Symmetric: swapping the arguments swaps the witnesses bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(HalfSpace a, HalfSpace b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, float.MaxValue, out _));
+        public static DistanceResult3 Between(in HalfSpace a, in HalfSpace b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, float.MaxValue, out _));
         /// <summary>Closest distance between a half-plane and a half-plane (2D), computed in double: exactly opposite normals: the signed gap a.Normal·(b.Point − a.Point) between the parallel boundaries, negative when they overlap (minus the depth), witnessed by the feet on the two boundaries of the midpoint of the stored points. Any other normals: the intersection is unbounded, Distance = −∞ (DistanceSquared 0) and both witnesses are one common point: the midpoint of the stored points when each lies in the other half-plane, else the stored point that lies in the other, else a point of both near where the boundaries meet (the midpoint, should that lie beyond the range of the API's precision: float's for the float API). Symmetric: swapping the arguments swaps the witnesses bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, float.MaxValue, out _));
-        /// <summary>Signed closest distance between a half-space and a half-space (3D), computed in double, without the witness points: the Distance of <see cref="Between(HalfSpace, HalfSpace)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in HalfPlane a, in HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, float.MaxValue, out _));
+        /// <summary>Signed closest distance between a half-space and a half-space (3D), computed in double, without the witness points: the Distance of <see cref="Between(in HalfSpace, in HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(HalfSpace a, HalfSpace b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
-        /// <summary>Signed closest distance between a half-plane and a half-plane (2D), computed in double, without the witness points: the Distance of <see cref="Between(HalfPlane, HalfPlane)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a half-plane and a half-plane (2D), computed in double, without the witness points: the Distance of <see cref="Between(in HalfPlane, in HalfPlane)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfPlane a, HalfPlane b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in HalfPlane a, in HalfPlane b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
     }
 
     public static partial class ProximityQuery
@@ -94,6 +94,6 @@ namespace ProximityLib
         public static bool Overlaps(HalfSpace a, HalfSpace b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a half-plane and a half-plane (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, HalfPlane b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in HalfPlane a, in HalfPlane b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
     }
 }

@@ -6,21 +6,21 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a line and a half-space (3D): a line not exactly parallel to the boundary (by the exact sign of Normal·Direction) crosses it, so the penetration is unbounded: Distance = −∞ (DistanceSquared 0) with both witnesses at the origin (ParameterA 0) when it lies inside or on the boundary, else at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction (ParameterA t; should that point lie beyond the double range, the origin, t = 0). Parallel: the constant height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary. Algorithm: two dot products from the stored boundary point and one division.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult3 Core(Line3 a, HalfSpace b, out bool inRange) => Kernels.LineHalfSpace(a.Origin, a.Direction, false, b.Normal, b.Point, out inRange);
+        internal static DistanceResult3 Core(in Line3 a, in HalfSpace b, out bool inRange) => Kernels.LineHalfSpace(a.Origin, a.Direction, false, b.Normal, b.Point, out inRange);
         /// <summary>Closest distance between a line and a half-plane (2D): a line not exactly parallel to the boundary (by the exact sign of Normal·Direction) crosses it, so the penetration is unbounded: Distance = −∞ (DistanceSquared 0) with both witnesses at the origin (ParameterA 0) when it lies inside or on the boundary, else at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction (ParameterA t; should that point lie beyond the double range, the origin, t = 0). Parallel: the constant height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary. Algorithm: two dot products from the stored boundary point and one division.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult2 Core(Line2 a, HalfPlane b, out bool inRange) => Kernels.LineHalfSpace(a.Origin.To3(), a.Direction.To3(), false, b.Normal.To3(), b.Point.To3(), out inRange).To2();
+        internal static DistanceResult2 Core(in Line2 a, in HalfPlane b, out bool inRange) => Kernels.LineHalfSpace(a.Origin.To3(), a.Direction.To3(), false, b.Normal.To3(), b.Point.To3(), out inRange).To2();
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static double DistanceCore(Line3 a, HalfSpace b, out bool inRange) => Kernels.LineHalfSpaceDistance(a.Origin, a.Direction, false, b.Normal, b.Point, out inRange);
+        internal static double DistanceCore(in Line3 a, in HalfSpace b, out bool inRange) => Kernels.LineHalfSpaceDistance(a.Origin, a.Direction, false, b.Normal, b.Point, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static double DistanceCore(Line2 a, HalfPlane b, out bool inRange) => Kernels.LineHalfSpaceDistance(a.Origin.To3(), a.Direction.To3(), false, b.Normal.To3(), b.Point.To3(), out inRange);
+        internal static double DistanceCore(in Line2 a, in HalfPlane b, out bool inRange) => Kernels.LineHalfSpaceDistance(a.Origin.To3(), a.Direction.To3(), false, b.Normal.To3(), b.Point.To3(), out inRange);
     }
 
     public static partial class ProximityQuery
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Line3 a, HalfSpace b, out bool inRange) => Kernels.LineHalfSpaceOverlaps(a.Origin, a.Direction, false, b.Normal, b.Point, out inRange);
+        internal static bool Core(in Line3 a, in HalfSpace b, out bool inRange) => Kernels.LineHalfSpaceOverlaps(a.Origin, a.Direction, false, b.Normal, b.Point, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Line2 a, HalfPlane b, out bool inRange) => Kernels.LineHalfSpaceOverlaps(a.Origin.To3(), a.Direction.To3(), false, b.Normal.To3(), b.Point.To3(), out inRange);
+        internal static bool Core(in Line2 a, in HalfPlane b, out bool inRange) => Kernels.LineHalfSpaceOverlaps(a.Origin.To3(), a.Direction.To3(), false, b.Normal.To3(), b.Point.To3(), out inRange);
     }
 }

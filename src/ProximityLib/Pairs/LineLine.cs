@@ -6,19 +6,19 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a line and a line (3D): never negative; parallel lines: the canonically first line's origin and its projection on the other (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the lines' t. Algorithm: gap and closest parameters from the common normal dA × dB formed with exact products (Dekker), so nearly parallel lines keep u·|ΔOrigin| accuracy (Eberly, distance between lines).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult3 Core(Line3 a, Line3 b, out bool inRange) =>
+        internal static DistanceResult3 Core(in Line3 a, in Line3 b, out bool inRange) =>
             Kernels.OrderedUnboundedPair(a.Origin, a.Direction, b.Origin, b.Direction, false, out inRange);
         /// <summary>Closest distance between a line and a line (2D): 0 at the crossing point unless parallel; parallel lines: the canonically first line's origin and its projection on the other (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the lines' t. Algorithm: crossing parameters from the cross product formed with exact products (Dekker), so nearly parallel lines keep their accuracy (Eberly, distance between lines).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult2 Core(Line2 a, Line2 b, out bool inRange) =>
+        internal static DistanceResult2 Core(in Line2 a, in Line2 b, out bool inRange) =>
             Kernels.OrderedUnboundedPair(a.Origin.To3(), a.Direction.To3(), b.Origin.To3(), b.Direction.To3(), false, out inRange).To2();
     }
 
     public static partial class ProximityQuery
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Line3 a, Line3 b, out bool inRange) => ClosestDistance.Core(a, b, out inRange).Distance <= 0;
+        internal static bool Core(in Line3 a, in Line3 b, out bool inRange) => ClosestDistance.Core(a, b, out inRange).Distance <= 0;
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Line2 a, Line2 b, out bool inRange) => ClosestDistance.Core(a, b, out inRange).Distance <= 0;
+        internal static bool Core(in Line2 a, in Line2 b, out bool inRange) => ClosestDistance.Core(a, b, out inRange).Distance <= 0;
     }
 }

@@ -67,25 +67,25 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a line and a line (3D), computed in double: never negative; parallel lines: the canonically first line's origin and its projection on the other (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the lines' t.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, Line3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Line3 a, in Line3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a line and a line (2D), computed in double: 0 at the crossing point unless parallel; parallel lines: the canonically first line's origin and its projection on the other (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the lines' t.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, Line2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
-        /// <summary>Signed closest distance between a line and a line (3D), computed in double, without the witness points: the Distance of <see cref="Between(Line3, Line3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Line2 a, in Line2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        /// <summary>Signed closest distance between a line and a line (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Line3, in Line3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Line3 a, Line3 b) => Between(a, b).Distance;
-        /// <summary>Signed closest distance between a line and a line (2D), computed in double, without the witness points: the Distance of <see cref="Between(Line2, Line2)"/>, bit for bit.</summary>
+        public static float Distance(in Line3 a, in Line3 b) => Between(a, b).Distance;
+        /// <summary>Signed closest distance between a line and a line (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Line2, in Line2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Line2 a, Line2 b) => Between(a, b).Distance;
+        public static float Distance(in Line2 a, in Line2 b) => Between(a, b).Distance;
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a line and a line (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, Line3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Line3 a, in Line3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a line and a line (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, Line2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Line2 a, in Line2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
     }
 }

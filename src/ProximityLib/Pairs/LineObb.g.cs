@@ -85,43 +85,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a line and an OBB (3D), computed in double: negative when the line passes through the box: minus the least sideways translation (perpendicular to the line) that clears it. Witnesses: ParameterA t with PointA = Origin + t·Direction; where the closest points are not unique (the line parallel to a face or an edge), the end of the stretch of closest points where the bracketing of the convex distance function first lands (a breakpoint where the line crosses a slab plane of the box).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Line3 a, in Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an OBB and a line (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Obb3 a, Line3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Obb3 a, in Line3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a line and an OBB (2D), computed in double: negative when the line passes through the box: minus the least sideways translation (perpendicular to the line) that clears it. Witnesses: ParameterA t with PointA = Origin + t·Direction; where the closest points are not unique (the line parallel to a face or an edge), the end of the stretch of closest points where the bracketing of the convex distance function first lands (a breakpoint where the line crosses a slab plane of the box).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Line2 a, in Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an OBB and a line (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Obb2 a, Line2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a line and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Line3, Obb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Obb2 a, in Line2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a line and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Line3, in Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Line3 a, Obb3 b) => Between(a, b).Distance;
+        public static float Distance(in Line3 a, in Obb3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an OBB and a line (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb3 a, Line3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a line and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Line2, Obb2)"/>, bit for bit.</summary>
+        public static float Distance(in Obb3 a, in Line3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a line and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Line2, in Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Line2 a, Obb2 b) => Between(a, b).Distance;
+        public static float Distance(in Line2 a, in Obb2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an OBB and a line (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb2 a, Line2 b) => Distance(b, a);
+        public static float Distance(in Obb2 a, in Line2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a line and an OBB (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Line3 a, in Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an OBB and a line (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb3 a, Line3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb3 a, in Line3 b) => Overlaps(b, a);
         /// <summary>Whether a line and an OBB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Line2 a, in Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an OBB and a line (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb2 a, Line2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb2 a, in Line2 b) => Overlaps(b, a);
     }
 }

@@ -9,14 +9,14 @@ namespace ProximityLib.Double
         internal static DistanceResult3 Core(Line3 a, Ray3 b, out bool inRange) => Kernels.UnboundedPair(a.Origin, a.Direction, false, b.Origin, b.Direction, true, out inRange);
         /// <summary>Closest distance between a line and a ray (2D): never negative (0 where the ray crosses the line); a ray parallel to the line or pointing away from it: its origin and the origin's projection on the line; ParameterA is the line's t, ParameterB the ray's t ≥ 0. Algorithm: the lines' crossing parameters from the cross product formed with exact products (Dekker), else the ray's origin against the line (Eberly, distance between linear components).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult2 Core(Line2 a, Ray2 b, out bool inRange) => Kernels.UnboundedPair(a.Origin.To3(), a.Direction.To3(), false, b.Origin.To3(), b.Direction.To3(), true, out inRange).To2();
+        internal static DistanceResult2 Core(in Line2 a, in Ray2 b, out bool inRange) => Kernels.UnboundedPair(a.Origin.To3(), a.Direction.To3(), false, b.Origin.To3(), b.Direction.To3(), true, out inRange).To2();
     }
 
     public static partial class ProximityQuery
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Line3 a, Ray3 b, out bool inRange) => Kernels.Unbounded(a.Origin, a.Direction, false, b.Origin, b.Direction, true, out _, out _, out inRange) == 0;
+        internal static bool Core(in Line3 a, in Ray3 b, out bool inRange) => Kernels.Unbounded(a.Origin, a.Direction, false, b.Origin, b.Direction, true, out _, out _, out inRange) == 0;
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Line2 a, Ray2 b, out bool inRange) => Kernels.Unbounded(a.Origin.To3(), a.Direction.To3(), false, b.Origin.To3(), b.Direction.To3(), true, out _, out _, out inRange) == 0;
+        internal static bool Core(in Line2 a, in Ray2 b, out bool inRange) => Kernels.Unbounded(a.Origin.To3(), a.Direction.To3(), false, b.Origin.To3(), b.Direction.To3(), true, out _, out _, out inRange) == 0;
     }
 }

@@ -91,37 +91,37 @@ namespace ProximityLib
         public static DistanceResult3 Between(Ray3 a, Line3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a line and a ray (2D), computed in double: never negative (0 where the ray crosses the line); a ray parallel to the line or pointing away from it: its origin and the origin's projection on the line; ParameterA is the line's t, ParameterB the ray's t ≥ 0.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, Ray2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Line2 a, in Ray2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a ray and a line (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Ray2 a, Line2 b) => Between(b, a).Swapped();
+        public static DistanceResult2 Between(in Ray2 a, in Line2 b) => Between(b, a).Swapped();
         /// <summary>Signed closest distance between a line and a ray (3D), computed in double, without the witness points: the Distance of <see cref="Between(Line3, Ray3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(Line3 a, Ray3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a ray and a line (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(Ray3 a, Line3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a line and a ray (2D), computed in double, without the witness points: the Distance of <see cref="Between(Line2, Ray2)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a line and a ray (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Line2, in Ray2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Line2 a, Ray2 b) => Between(a, b).Distance;
+        public static float Distance(in Line2 a, in Ray2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a ray and a line (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Ray2 a, Line2 b) => Distance(b, a);
+        public static float Distance(in Ray2 a, in Line2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a line and a ray (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, Ray3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Line3 a, in Ray3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a ray and a line (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray3 a, Line3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Ray3 a, in Line3 b) => Overlaps(b, a);
         /// <summary>Whether a line and a ray (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, Ray2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Line2 a, in Ray2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a ray and a line (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray2 a, Line2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Ray2 a, in Line2 b) => Overlaps(b, a);
     }
 }

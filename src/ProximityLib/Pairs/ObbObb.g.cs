@@ -75,16 +75,16 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between an OBB and an OBB (3D), computed in double: negative when overlapping (minimum translation over the separating-axis candidates).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Obb3 a, Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Obb3 a, in Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an OBB and an OBB (2D), computed in double: negative when overlapping (minimum translation over the separating-axis candidates).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Obb2 a, Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
-        /// <summary>Signed closest distance between an OBB and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Obb3, Obb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Obb2 a, in Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        /// <summary>Signed closest distance between an OBB and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Obb3, in Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb3 a, Obb3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
-        /// <summary>Signed closest distance between an OBB and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Obb2, Obb2)"/>, bit for bit.</summary>
+        public static float Distance(in Obb3 a, in Obb3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        /// <summary>Signed closest distance between an OBB and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Obb2, in Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb2 a, Obb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Obb2 a, in Obb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
     }
 
     public static partial class ProximityQuery

@@ -93,28 +93,28 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a point and a segment (3D), computed in double: never negative; ParameterB is the clamped projection parameter.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Vector3 a, Segment3 b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
+        public static DistanceResult3 Between(Vector3 a, in Segment3 b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
         /// <summary>Closest distance between a segment and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Segment3 a, Vector3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Segment3 a, Vector3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and a segment (2D), computed in double: never negative; ParameterB is the clamped projection parameter.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Vector2 a, Segment2 b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
+        public static DistanceResult2 Between(Vector2 a, in Segment2 b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
         /// <summary>Closest distance between a segment and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, Vector2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a point and a segment (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, Segment3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Segment2 a, Vector2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a point and a segment (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, in Segment3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(Vector3 a, in Segment3 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
         /// <summary>Signed closest distance between a segment and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(in Segment3 a, Vector3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a point and a segment (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, Segment2)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a point and a segment (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, in Segment2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector2 a, Segment2 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
+        public static float Distance(Vector2 a, in Segment2 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
         /// <summary>Signed closest distance between a segment and a point (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Segment2 a, Vector2 b) => Distance(b, a);
+        public static float Distance(in Segment2 a, Vector2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
@@ -127,9 +127,9 @@ namespace ProximityLib
         public static bool Overlaps(in Segment3 a, Vector3 b) => Overlaps(b, a);
         /// <summary>Whether a point and a segment (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2 a, Segment2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner, out _);
+        public static bool Overlaps(Vector2 a, in Segment2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner, out _);
         /// <summary>Whether a segment and a point (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment2 a, Vector2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Segment2 a, Vector2 b) => Overlaps(b, a);
     }
 }

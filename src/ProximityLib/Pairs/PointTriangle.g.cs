@@ -85,28 +85,28 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a point and a triangle (3D), computed in double: never negative (the triangle is two-sided, not solid); a degenerate triangle is the segment or point it is.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Vector3 a, Triangle3 b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
+        public static DistanceResult3 Between(Vector3 a, in Triangle3 b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
         /// <summary>Closest distance between a triangle and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Triangle3 a, Vector3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Triangle3 a, Vector3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and a triangle (2D), computed in double: negative inside the solid triangle, minus the distance to the nearest edge, with PointB the point on that edge (the first of equal edges AB, BC, CA); a degenerate triangle is the segment or point it is (never negative).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Vector2 a, Triangle2 b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
+        public static DistanceResult2 Between(Vector2 a, in Triangle2 b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
         /// <summary>Closest distance between a triangle and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Triangle2 a, Vector2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a point and a triangle (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, Triangle3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Triangle2 a, Vector2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a point and a triangle (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, in Triangle3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector3 a, Triangle3 b) => Between(a, b).Distance;
+        public static float Distance(Vector3 a, in Triangle3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle3 a, Vector3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a point and a triangle (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, Triangle2)"/>, bit for bit.</summary>
+        public static float Distance(in Triangle3 a, Vector3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a point and a triangle (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, in Triangle2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector2 a, Triangle2 b) => Between(a, b).Distance;
+        public static float Distance(Vector2 a, in Triangle2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a point (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle2 a, Vector2 b) => Distance(b, a);
+        public static float Distance(in Triangle2 a, Vector2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
@@ -119,9 +119,9 @@ namespace ProximityLib
         public static bool Overlaps(Triangle3 a, Vector3 b) => Overlaps(b, a);
         /// <summary>Whether a point and a triangle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2 a, Triangle2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner, out _);
+        public static bool Overlaps(Vector2 a, in Triangle2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner, out _);
         /// <summary>Whether a triangle and a point (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle2 a, Vector2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle2 a, Vector2 b) => Overlaps(b, a);
     }
 }

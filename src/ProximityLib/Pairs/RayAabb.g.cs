@@ -85,43 +85,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a ray and an AABB (3D), computed in double: negative when the ray enters the box: minus the least translation that clears it, sideways (perpendicular to the ray) or back past the face it leaves through. Witnesses: ParameterA t ≥ 0 with PointA = Origin + t·Direction; where the closest points are not unique (the ray parallel to a face or an edge), the end of the stretch of closest points where the bracketing of the convex distance function first lands (a breakpoint where the ray crosses a slab plane of the box).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Ray3 a, Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Ray3 a, in Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an AABB and a ray (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, Ray3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Aabb3 a, in Ray3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a ray and an AABB (2D), computed in double: negative when the ray enters the box: minus the least translation that clears it, sideways (perpendicular to the ray) or back past the face it leaves through. Witnesses: ParameterA t ≥ 0 with PointA = Origin + t·Direction; where the closest points are not unique (the ray parallel to a face or an edge), the end of the stretch of closest points where the bracketing of the convex distance function first lands (a breakpoint where the ray crosses a slab plane of the box).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Ray2 a, Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Ray2 a, in Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an AABB and a ray (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, Ray2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a ray and an AABB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Ray3, Aabb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Aabb2 a, in Ray2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a ray and an AABB (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Ray3, in Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Ray3 a, Aabb3 b) => Between(a, b).Distance;
+        public static float Distance(in Ray3 a, in Aabb3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an AABB and a ray (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Aabb3 a, Ray3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a ray and an AABB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Ray2, Aabb2)"/>, bit for bit.</summary>
+        public static float Distance(in Aabb3 a, in Ray3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a ray and an AABB (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Ray2, in Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Ray2 a, Aabb2 b) => Between(a, b).Distance;
+        public static float Distance(in Ray2 a, in Aabb2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an AABB and a ray (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Aabb2 a, Ray2 b) => Distance(b, a);
+        public static float Distance(in Aabb2 a, in Ray2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a ray and an AABB (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray3 a, Aabb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Ray3 a, in Aabb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an AABB and a ray (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb3 a, Ray3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb3 a, in Ray3 b) => Overlaps(b, a);
         /// <summary>Whether a ray and an AABB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray2 a, Aabb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Ray2 a, in Aabb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an AABB and a ray (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb2 a, Ray2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb2 a, in Ray2 b) => Overlaps(b, a);
     }
 }

@@ -67,25 +67,25 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a ray and a ray (3D), computed in double: never negative; where the minimum is not unique (parallel rays) the canonically first ray's origin and its nearest point on the other when that is no farther, else the other's origin and its nearest point on the first (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the rays' t ≥ 0.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Ray3 a, Ray3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Ray3 a, in Ray3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a ray and a ray (2D), computed in double: never negative (0 where they cross); where the minimum is not unique (parallel rays) the canonically first ray's origin and its nearest point on the other when that is no farther, else the other's origin and its nearest point on the first (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the rays' t ≥ 0.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Ray2 a, Ray2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
-        /// <summary>Signed closest distance between a ray and a ray (3D), computed in double, without the witness points: the Distance of <see cref="Between(Ray3, Ray3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Ray2 a, in Ray2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        /// <summary>Signed closest distance between a ray and a ray (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Ray3, in Ray3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Ray3 a, Ray3 b) => Between(a, b).Distance;
-        /// <summary>Signed closest distance between a ray and a ray (2D), computed in double, without the witness points: the Distance of <see cref="Between(Ray2, Ray2)"/>, bit for bit.</summary>
+        public static float Distance(in Ray3 a, in Ray3 b) => Between(a, b).Distance;
+        /// <summary>Signed closest distance between a ray and a ray (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Ray2, in Ray2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Ray2 a, Ray2 b) => Between(a, b).Distance;
+        public static float Distance(in Ray2 a, in Ray2 b) => Between(a, b).Distance;
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a ray and a ray (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray3 a, Ray3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Ray3 a, in Ray3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a ray and a ray (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray2 a, Ray2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Ray2 a, in Ray2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
     }
 }

@@ -89,43 +89,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a segment and a line (3D), computed in double: never negative; for a segment parallel to the line the closest pair at the segment's start (the segment kernel's first endpoint minimum on the cut line); ParameterA is the segment parameter, ParameterB the line's t.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Segment3 a, Line3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Segment3 a, in Line3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a line and a segment (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, Segment3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Line3 a, in Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and a line (2D), computed in double: never negative (0 where the segment crosses the line); for a segment parallel to the line the closest pair at the segment's start; ParameterA is the segment parameter, ParameterB the line's t.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, Line2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Segment2 a, in Line2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a line and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, Segment2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a segment and a line (3D), computed in double, without the witness points: the Distance of <see cref="Between(Segment3, Line3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Line2 a, in Segment2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a segment and a line (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Segment3, in Line3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(Segment3 a, Line3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a line and a segment (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(Line3 a, Segment3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a segment and a line (2D), computed in double, without the witness points: the Distance of <see cref="Between(Segment2, Line2)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a segment and a line (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Segment2, in Line2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Segment2 a, Line2 b) => Between(a, b).Distance;
+        public static float Distance(in Segment2 a, in Line2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a line and a segment (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Line2 a, Segment2 b) => Distance(b, a);
+        public static float Distance(in Line2 a, in Segment2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and a line (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment3 a, Line3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Segment3 a, in Line3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a line and a segment (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, Segment3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Line3 a, in Segment3 b) => Overlaps(b, a);
         /// <summary>Whether a segment and a line (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment2 a, Line2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Segment2 a, in Line2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a line and a segment (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, Segment2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Line2 a, in Segment2 b) => Overlaps(b, a);
     }
 }

@@ -75,25 +75,25 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a segment and a segment (3D), computed in double: never negative; for parallel overlapping segments one of the closest pairs (the first minimum among the endpoint pairs, docs/api.md), the same in either argument order.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Segment3 a, Segment3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Segment3 a, in Segment3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a segment and a segment (2D), computed in double: never negative; for parallel overlapping segments one of the closest pairs (the first minimum among the endpoint pairs, docs/api.md), the same in either argument order.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, Segment2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
-        /// <summary>Signed closest distance between a segment and a segment (3D), computed in double, without the witness points: the Distance of <see cref="Between(Segment3, Segment3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Segment2 a, in Segment2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        /// <summary>Signed closest distance between a segment and a segment (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Segment3, in Segment3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Segment3 a, Segment3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
-        /// <summary>Signed closest distance between a segment and a segment (2D), computed in double, without the witness points: the Distance of <see cref="Between(Segment2, Segment2)"/>, bit for bit.</summary>
+        public static float Distance(in Segment3 a, in Segment3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        /// <summary>Signed closest distance between a segment and a segment (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Segment2, in Segment2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Segment2 a, Segment2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Segment2 a, in Segment2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and a segment (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment3 a, Segment3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Segment3 a, in Segment3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a segment and a segment (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment2 a, Segment2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Segment2 a, in Segment2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
     }
 }

@@ -85,43 +85,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a segment and a triangle (3D), computed in double: never negative (neither is solid); crossing, 0 with the crossing point as both witnesses; where the minimum is not unique (a segment parallel to the triangle over it, or lying in its plane across it), the first minimum among the crossing, the endpoints Start and End against the triangle, and the segment against edges AB, BC, CA.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Segment3 a, Triangle3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Segment3 a, in Triangle3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a triangle and a segment (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Triangle3 a, Segment3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Triangle3 a, in Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and a triangle (2D), computed in double: negative when the segment enters the solid triangle (minimum translation over the separating-axis candidates: the edge normals and the segment's normal); apart, the closest pair against the edges (the first minimum over AB, BC, CA); a degenerate triangle is the segment or point it is (never negative).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, Triangle2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Segment2 a, in Triangle2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a triangle and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Triangle2 a, Segment2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a segment and a triangle (3D), computed in double, without the witness points: the Distance of <see cref="Between(Segment3, Triangle3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Triangle2 a, in Segment2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a segment and a triangle (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Segment3, in Triangle3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Segment3 a, Triangle3 b) => Between(a, b).Distance;
+        public static float Distance(in Segment3 a, in Triangle3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a segment (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle3 a, Segment3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a segment and a triangle (2D), computed in double, without the witness points: the Distance of <see cref="Between(Segment2, Triangle2)"/>, bit for bit.</summary>
+        public static float Distance(in Triangle3 a, in Segment3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a segment and a triangle (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Segment2, in Triangle2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Segment2 a, Triangle2 b) => Between(a, b).Distance;
+        public static float Distance(in Segment2 a, in Triangle2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a segment (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle2 a, Segment2 b) => Distance(b, a);
+        public static float Distance(in Triangle2 a, in Segment2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and a triangle (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment3 a, Triangle3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Segment3 a, in Triangle3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a triangle and a segment (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle3 a, Segment3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle3 a, in Segment3 b) => Overlaps(b, a);
         /// <summary>Whether a segment and a triangle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment2 a, Triangle2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Segment2 a, in Triangle2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a triangle and a segment (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle2 a, Segment2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle2 a, in Segment2 b) => Overlaps(b, a);
     }
 }

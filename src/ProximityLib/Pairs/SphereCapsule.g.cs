@@ -93,43 +93,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a sphere and a capsule (3D), computed in double: negative when they overlap (depth = sum of the radii − distance from the center to the axis); the witnesses lie along the axis normal through the center (a center on the axis: along <c>AnyPerpendicular</c> of the axis, +X for a zero-length axis); ParameterB is the axis parameter.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Capsule3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Sphere a, in Capsule3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a capsule and a sphere (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Capsule3 a, Sphere b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Capsule3 a, in Sphere b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a circle and a capsule (2D), computed in double: negative when they overlap (depth = sum of the radii − distance from the center to the axis); the witnesses lie along the axis normal through the center (a center on the axis: along the axis's normal (y, −x), +X for a zero-length axis); ParameterB is the axis parameter.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Capsule2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Circle a, in Capsule2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a capsule and a circle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Capsule2 a, Circle b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a sphere and a capsule (3D), computed in double, without the witness points: the Distance of <see cref="Between(Sphere, Capsule3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Capsule2 a, in Circle b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a sphere and a capsule (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Sphere, in Capsule3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Sphere a, Capsule3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Sphere a, in Capsule3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a capsule and a sphere (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Capsule3 a, Sphere b) => Distance(b, a);
-        /// <summary>Signed closest distance between a circle and a capsule (2D), computed in double, without the witness points: the Distance of <see cref="Between(Circle, Capsule2)"/>, bit for bit.</summary>
+        public static float Distance(in Capsule3 a, in Sphere b) => Distance(b, a);
+        /// <summary>Signed closest distance between a circle and a capsule (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Circle, in Capsule2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Circle a, Capsule2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Circle a, in Capsule2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a capsule and a circle (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Capsule2 a, Circle b) => Distance(b, a);
+        public static float Distance(in Capsule2 a, in Circle b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and a capsule (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Capsule3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Sphere a, in Capsule3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a capsule and a sphere (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule3 a, Sphere b) => Overlaps(b, a);
+        public static bool Overlaps(in Capsule3 a, in Sphere b) => Overlaps(b, a);
         /// <summary>Whether a circle and a capsule (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Capsule2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Circle a, in Capsule2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a capsule and a circle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule2 a, Circle b) => Overlaps(b, a);
+        public static bool Overlaps(in Capsule2 a, in Circle b) => Overlaps(b, a);
     }
 }

@@ -93,43 +93,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a sphere and an OBB (3D), computed in double: negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Sphere a, in Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an OBB and a sphere (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Obb3 a, Sphere b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Obb3 a, in Sphere b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a circle and an OBB (2D), computed in double: negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Circle a, in Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an OBB and a circle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Obb2 a, Circle b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a sphere and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Sphere, Obb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Obb2 a, in Circle b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a sphere and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Sphere, in Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Sphere a, Obb3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Sphere a, in Obb3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between an OBB and a sphere (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb3 a, Sphere b) => Distance(b, a);
-        /// <summary>Signed closest distance between a circle and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Circle, Obb2)"/>, bit for bit.</summary>
+        public static float Distance(in Obb3 a, in Sphere b) => Distance(b, a);
+        /// <summary>Signed closest distance between a circle and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Circle, in Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Circle a, Obb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Circle a, in Obb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between an OBB and a circle (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb2 a, Circle b) => Distance(b, a);
+        public static float Distance(in Obb2 a, in Circle b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and an OBB (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Sphere a, in Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an OBB and a sphere (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb3 a, Sphere b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb3 a, in Sphere b) => Overlaps(b, a);
         /// <summary>Whether a circle and an OBB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Circle a, in Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an OBB and a circle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb2 a, Circle b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb2 a, in Circle b) => Overlaps(b, a);
     }
 }

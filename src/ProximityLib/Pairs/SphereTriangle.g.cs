@@ -85,43 +85,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a sphere and a triangle (3D), computed in double: negative when the triangle enters the sphere (depth = radius − distance from the center to the triangle); a center on the triangle is pushed along the triangle's normal (B − A) × (C − A) (a degenerate triangle: a direction perpendicular to its edge, +X for a point).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Triangle3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Sphere a, in Triangle3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a triangle and a sphere (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Triangle3 a, Sphere b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Triangle3 a, in Sphere b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a circle and a triangle (2D), computed in double: negative when they overlap (depth = radius − distance from the center, or radius + the center's depth below the nearest edge when it is inside the solid triangle, pushed out through that edge).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Triangle2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Circle a, in Triangle2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a triangle and a circle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Triangle2 a, Circle b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a sphere and a triangle (3D), computed in double, without the witness points: the Distance of <see cref="Between(Sphere, Triangle3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Triangle2 a, in Circle b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a sphere and a triangle (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Sphere, in Triangle3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Sphere a, Triangle3 b) => Between(a, b).Distance;
+        public static float Distance(in Sphere a, in Triangle3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a sphere (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle3 a, Sphere b) => Distance(b, a);
-        /// <summary>Signed closest distance between a circle and a triangle (2D), computed in double, without the witness points: the Distance of <see cref="Between(Circle, Triangle2)"/>, bit for bit.</summary>
+        public static float Distance(in Triangle3 a, in Sphere b) => Distance(b, a);
+        /// <summary>Signed closest distance between a circle and a triangle (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Circle, in Triangle2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Circle a, Triangle2 b) => Between(a, b).Distance;
+        public static float Distance(in Circle a, in Triangle2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a circle (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle2 a, Circle b) => Distance(b, a);
+        public static float Distance(in Triangle2 a, in Circle b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and a triangle (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Triangle3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Sphere a, in Triangle3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a triangle and a sphere (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle3 a, Sphere b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle3 a, in Sphere b) => Overlaps(b, a);
         /// <summary>Whether a circle and a triangle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Triangle2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Circle a, in Triangle2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a triangle and a circle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle2 a, Circle b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle2 a, in Circle b) => Overlaps(b, a);
     }
 }

@@ -64,16 +64,16 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between an AABB and an AABB (3D), computed in double: negative when overlapping (least per-axis overlap); shared intervals put the witnesses at their middle.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Aabb3 a, in Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an AABB and an AABB (2D), computed in double: negative when overlapping (least per-axis overlap); shared intervals put the witnesses at their middle.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
-        /// <summary>Signed closest distance between an AABB and an AABB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Aabb3, Aabb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Aabb2 a, in Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        /// <summary>Signed closest distance between an AABB and an AABB (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Aabb3, in Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(in Aabb3 a, in Aabb3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
-        /// <summary>Signed closest distance between an AABB and an AABB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Aabb2, Aabb2)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between an AABB and an AABB (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Aabb2, in Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Aabb2 a, Aabb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Aabb2 a, in Aabb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
     }
 
     public static partial class ProximityQuery
@@ -83,6 +83,6 @@ namespace ProximityLib
         public static bool Overlaps(in Aabb3 a, in Aabb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
         /// <summary>Whether an AABB and an AABB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb2 a, Aabb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
+        public static bool Overlaps(in Aabb2 a, in Aabb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner);
     }
 }

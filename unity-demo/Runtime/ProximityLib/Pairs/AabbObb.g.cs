@@ -95,28 +95,28 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between an AABB and an OBB (3D), computed in double: negative when overlapping (minimum translation over the separating-axis candidates).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Aabb3 a, in Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an OBB and an AABB (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Obb3 a, Aabb3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Obb3 a, in Aabb3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between an AABB and an OBB (2D), computed in double: negative when overlapping (minimum translation over the separating-axis candidates).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Aabb2 a, in Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an OBB and an AABB (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Obb2 a, Aabb2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between an AABB and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Aabb3, Obb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Obb2 a, in Aabb2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between an AABB and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Aabb3, in Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Aabb3 a, Obb3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Aabb3 a, in Obb3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between an OBB and an AABB (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb3 a, Aabb3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between an AABB and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Aabb2, Obb2)"/>, bit for bit.</summary>
+        public static float Distance(in Obb3 a, in Aabb3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between an AABB and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Aabb2, in Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Aabb2 a, Obb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Aabb2 a, in Obb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between an OBB and an AABB (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb2 a, Aabb2 b) => Distance(b, a);
+        public static float Distance(in Obb2 a, in Aabb2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery

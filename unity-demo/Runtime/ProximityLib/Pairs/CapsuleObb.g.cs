@@ -87,43 +87,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a capsule and an OBB (3D), computed in double: the axis segment's solid signed distance to the box less the radius (negative when overlapping: the axis's depth plus the radius); PointA is the axis witness (ParameterA its t) moved by the radius toward the box (apart) or against the push (overlapping; the face's outward normal when the axis just touches), PointB on the box.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Capsule3 a, Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Capsule3 a, in Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an OBB and a capsule (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Obb3 a, Capsule3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Obb3 a, in Capsule3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a capsule and an OBB (2D), computed in double: the axis segment's solid signed distance to the box less the radius (negative when overlapping: the axis's depth plus the radius); PointA is the axis witness (ParameterA its t) moved by the radius toward the box (apart) or against the push (overlapping; the face's outward normal when the axis just touches), PointB on the box.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Capsule2 a, Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Capsule2 a, in Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an OBB and a capsule (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Obb2 a, Capsule2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a capsule and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Capsule3, Obb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Obb2 a, in Capsule2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a capsule and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Capsule3, in Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Capsule3 a, Obb3 b) => Between(a, b).Distance;
+        public static float Distance(in Capsule3 a, in Obb3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an OBB and a capsule (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb3 a, Capsule3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a capsule and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Capsule2, Obb2)"/>, bit for bit.</summary>
+        public static float Distance(in Obb3 a, in Capsule3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a capsule and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Capsule2, in Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Capsule2 a, Obb2 b) => Between(a, b).Distance;
+        public static float Distance(in Capsule2 a, in Obb2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an OBB and a capsule (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb2 a, Capsule2 b) => Distance(b, a);
+        public static float Distance(in Obb2 a, in Capsule2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a capsule and an OBB (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule3 a, Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Capsule3 a, in Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an OBB and a capsule (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb3 a, Capsule3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb3 a, in Capsule3 b) => Overlaps(b, a);
         /// <summary>Whether a capsule and an OBB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule2 a, Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Capsule2 a, in Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an OBB and a capsule (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb2 a, Capsule2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb2 a, in Capsule2 b) => Overlaps(b, a);
     }
 }

@@ -87,43 +87,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a capsule and a triangle (3D), computed in double: the axis's solid signed distance to the triangle less the radius: apart, the segment–triangle gap less the radius; an axis through the triangle adds the depth of that crossing (the least push over the triangle's normal and the axis × edge directions), an axis touching or lying in the plane none (equal pushes: the first of N then the axis × edge directions AB, AC, BC, toward −axis first). ParameterA is the axis parameter of the point nearest PointA.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Capsule3 a, Triangle3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Capsule3 a, in Triangle3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a triangle and a capsule (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Triangle3 a, Capsule3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Triangle3 a, in Capsule3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a capsule and a triangle (2D), computed in double: the axis's solid signed distance to the solid triangle (the separating-axis depth when the axis enters it, including a degenerate triangle it crosses) less the radius. ParameterA is the axis parameter of the point nearest PointA.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Capsule2 a, Triangle2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Capsule2 a, in Triangle2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a triangle and a capsule (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Triangle2 a, Capsule2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a capsule and a triangle (3D), computed in double, without the witness points: the Distance of <see cref="Between(Capsule3, Triangle3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Triangle2 a, in Capsule2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a capsule and a triangle (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Capsule3, in Triangle3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Capsule3 a, Triangle3 b) => Between(a, b).Distance;
+        public static float Distance(in Capsule3 a, in Triangle3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a capsule (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle3 a, Capsule3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a capsule and a triangle (2D), computed in double, without the witness points: the Distance of <see cref="Between(Capsule2, Triangle2)"/>, bit for bit.</summary>
+        public static float Distance(in Triangle3 a, in Capsule3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a capsule and a triangle (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Capsule2, in Triangle2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Capsule2 a, Triangle2 b) => Between(a, b).Distance;
+        public static float Distance(in Capsule2 a, in Triangle2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a capsule (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle2 a, Capsule2 b) => Distance(b, a);
+        public static float Distance(in Triangle2 a, in Capsule2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a capsule and a triangle (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule3 a, Triangle3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Capsule3 a, in Triangle3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a triangle and a capsule (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle3 a, Capsule3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle3 a, in Capsule3 b) => Overlaps(b, a);
         /// <summary>Whether a capsule and a triangle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule2 a, Triangle2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Capsule2 a, in Triangle2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a triangle and a capsule (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle2 a, Capsule2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle2 a, in Capsule2 b) => Overlaps(b, a);
     }
 }

@@ -101,37 +101,37 @@ namespace ProximityLib
         public static DistanceResult3 Between(Aabb3 a, HalfSpace b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a half-plane and an AABB (2D), computed in double: the height Normal·(x − Point) of the box's lowest point x, negative when the box enters (minus the depth); witnesses the foot of that point on the boundary and the point itself. Where a face or edge is parallel to the boundary the point is the middle of the lowest face or edge.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in HalfPlane a, in Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an AABB and a half-plane (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, HalfPlane b) => Between(b, a).Swapped();
+        public static DistanceResult2 Between(in Aabb2 a, in HalfPlane b) => Between(b, a).Swapped();
         /// <summary>Signed closest distance between a half-space and an AABB (3D), computed in double, without the witness points: the Distance of <see cref="Between(HalfSpace, Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfSpace a, Aabb3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in HalfSpace a, in Aabb3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between an AABB and a half-space (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Aabb3 a, HalfSpace b) => Distance(b, a);
-        /// <summary>Signed closest distance between a half-plane and an AABB (2D), computed in double, without the witness points: the Distance of <see cref="Between(HalfPlane, Aabb2)"/>, bit for bit.</summary>
+        public static float Distance(in Aabb3 a, in HalfSpace b) => Distance(b, a);
+        /// <summary>Signed closest distance between a half-plane and an AABB (2D), computed in double, without the witness points: the Distance of <see cref="Between(in HalfPlane, in Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfPlane a, Aabb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in HalfPlane a, in Aabb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between an AABB and a half-plane (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Aabb2 a, HalfPlane b) => Distance(b, a);
+        public static float Distance(in Aabb2 a, in HalfPlane b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a half-space and an AABB (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, Aabb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in HalfSpace a, in Aabb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an AABB and a half-space (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb3 a, HalfSpace b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb3 a, in HalfSpace b) => Overlaps(b, a);
         /// <summary>Whether a half-plane and an AABB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, Aabb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in HalfPlane a, in Aabb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an AABB and a half-plane (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb2 a, HalfPlane b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb2 a, in HalfPlane b) => Overlaps(b, a);
     }
 }

@@ -95,43 +95,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a half-space and an OBB (3D), computed in double: the height Normal·(x − Point) of the box's lowest point x, negative when the box enters (minus the depth); witnesses the foot of that point on the boundary and the point itself. Where a face or edge is parallel to the boundary the point is the middle of the lowest face or edge.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(HalfSpace a, Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in HalfSpace a, in Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an OBB and a half-space (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Obb3 a, HalfSpace b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Obb3 a, in HalfSpace b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a half-plane and an OBB (2D), computed in double: the height Normal·(x − Point) of the box's lowest point x, negative when the box enters (minus the depth); witnesses the foot of that point on the boundary and the point itself. Where a face or edge is parallel to the boundary the point is the middle of the lowest face or edge.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in HalfPlane a, in Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an OBB and a half-plane (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Obb2 a, HalfPlane b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a half-space and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(HalfSpace, Obb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Obb2 a, in HalfPlane b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a half-space and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(in HalfSpace, in Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfSpace a, Obb3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in HalfSpace a, in Obb3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between an OBB and a half-space (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb3 a, HalfSpace b) => Distance(b, a);
-        /// <summary>Signed closest distance between a half-plane and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(HalfPlane, Obb2)"/>, bit for bit.</summary>
+        public static float Distance(in Obb3 a, in HalfSpace b) => Distance(b, a);
+        /// <summary>Signed closest distance between a half-plane and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(in HalfPlane, in Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfPlane a, Obb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in HalfPlane a, in Obb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between an OBB and a half-plane (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb2 a, HalfPlane b) => Distance(b, a);
+        public static float Distance(in Obb2 a, in HalfPlane b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a half-space and an OBB (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in HalfSpace a, in Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an OBB and a half-space (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb3 a, HalfSpace b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb3 a, in HalfSpace b) => Overlaps(b, a);
         /// <summary>Whether a half-plane and an OBB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in HalfPlane a, in Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an OBB and a half-plane (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb2 a, HalfPlane b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb2 a, in HalfPlane b) => Overlaps(b, a);
     }
 }

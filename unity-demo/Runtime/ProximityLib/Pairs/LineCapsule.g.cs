@@ -91,28 +91,28 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a line and a capsule (3D), computed in double: negative when the line enters the capsule; 3D: distance of the axes less the radius (the axes' Minkowski difference is flat); witnesses pushed along the unit residual, or for meeting axes along the common normal A.dir × axis (parallel: <c>AnyPerpendicular</c> of A's direction); ParameterA is the line's t, ParameterB the axis parameter.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, Capsule3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Line3 a, in Capsule3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a capsule and a line (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Capsule3 a, Line3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Capsule3 a, in Line3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a line and a capsule (2D), computed in double: negative when the line enters the capsule; 2D: separated axes give their distance less the radius; crossing axes give −(radius + the crossing depth of the axes, the smallest push of one axis off the other along a face normal of their Minkowski difference), the witnesses an endpoint and its image across that face, pushed by the radius; ParameterA is the line's t, ParameterB the axis parameter.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, Capsule2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Line2 a, in Capsule2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a capsule and a line (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Capsule2 a, Line2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a line and a capsule (3D), computed in double, without the witness points: the Distance of <see cref="Between(Line3, Capsule3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Capsule2 a, in Line2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a line and a capsule (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Line3, in Capsule3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Line3 a, Capsule3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Line3 a, in Capsule3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a capsule and a line (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Capsule3 a, Line3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a line and a capsule (2D), computed in double, without the witness points: the Distance of <see cref="Between(Line2, Capsule2)"/>, bit for bit.</summary>
+        public static float Distance(in Capsule3 a, in Line3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a line and a capsule (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Line2, in Capsule2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Line2 a, Capsule2 b) => Between(a, b).Distance;
+        public static float Distance(in Line2 a, in Capsule2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a capsule and a line (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Capsule2 a, Line2 b) => Distance(b, a);
+        public static float Distance(in Capsule2 a, in Line2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
@@ -125,9 +125,9 @@ namespace ProximityLib
         public static bool Overlaps(Capsule3 a, Line3 b) => Overlaps(b, a);
         /// <summary>Whether a line and a capsule (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, Capsule2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Line2 a, in Capsule2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a capsule and a line (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule2 a, Line2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Capsule2 a, in Line2 b) => Overlaps(b, a);
     }
 }

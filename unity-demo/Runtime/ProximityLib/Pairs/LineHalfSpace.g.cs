@@ -95,43 +95,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a line and a half-space (3D), computed in double: a line not exactly parallel to the boundary (by the exact sign of Normal·Direction) crosses it, so the penetration is unbounded: Distance = −∞ (DistanceSquared 0) with both witnesses at the origin (ParameterA 0) when it lies inside or on the boundary, else at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction (ParameterA t; should that point lie beyond the double range, the origin, t = 0). Parallel: the constant height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, HalfSpace b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Line3 a, in HalfSpace b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a half-space and a line (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(HalfSpace a, Line3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in HalfSpace a, in Line3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a line and a half-plane (2D), computed in double: a line not exactly parallel to the boundary (by the exact sign of Normal·Direction) crosses it, so the penetration is unbounded: Distance = −∞ (DistanceSquared 0) with both witnesses at the origin (ParameterA 0) when it lies inside or on the boundary, else at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction (ParameterA t; should that point lie beyond the double range, the origin, t = 0). Parallel: the constant height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Line2 a, in HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a half-plane and a line (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Line2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a line and a half-space (3D), computed in double, without the witness points: the Distance of <see cref="Between(Line3, HalfSpace)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in HalfPlane a, in Line2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a line and a half-space (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Line3, in HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Line3 a, HalfSpace b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Line3 a, in HalfSpace b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a half-space and a line (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfSpace a, Line3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a line and a half-plane (2D), computed in double, without the witness points: the Distance of <see cref="Between(Line2, HalfPlane)"/>, bit for bit.</summary>
+        public static float Distance(in HalfSpace a, in Line3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a line and a half-plane (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Line2, in HalfPlane)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Line2 a, HalfPlane b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Line2 a, in HalfPlane b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a half-plane and a line (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfPlane a, Line2 b) => Distance(b, a);
+        public static float Distance(in HalfPlane a, in Line2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a line and a half-space (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, HalfSpace b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Line3 a, in HalfSpace b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a half-space and a line (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, Line3 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfSpace a, in Line3 b) => Overlaps(b, a);
         /// <summary>Whether a line and a half-plane (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, HalfPlane b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Line2 a, in HalfPlane b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a half-plane and a line (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, Line2 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfPlane a, in Line2 b) => Overlaps(b, a);
     }
 }

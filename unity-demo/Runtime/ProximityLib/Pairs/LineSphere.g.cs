@@ -95,43 +95,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a line and a sphere (3D), computed in double: negative when the line enters the sphere (depth = radius − distance from the center to the line); PointB on the sphere along the normal from the line (a center on the line: PointB = center − <c>AnyPerpendicular</c>(direction)·radius); ParameterA is the line's t = Direction·(center − Origin).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Line3 a, in Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a sphere and a line (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Line3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Sphere a, in Line3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a line and a circle (2D), computed in double: negative when the line enters the circle (depth = radius − distance from the center to the line); PointB on the circle along the normal from the line (a center on the line: PointB = center − (y, −x)·radius for the direction (x, y)); ParameterA is the line's t = Direction·(center − Origin).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, Circle b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Line2 a, in Circle b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a circle and a line (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Line2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a line and a sphere (3D), computed in double, without the witness points: the Distance of <see cref="Between(Line3, Sphere)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Circle a, in Line2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a line and a sphere (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Line3, in Sphere)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Line3 a, Sphere b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Line3 a, in Sphere b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a sphere and a line (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Sphere a, Line3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a line and a circle (2D), computed in double, without the witness points: the Distance of <see cref="Between(Line2, Circle)"/>, bit for bit.</summary>
+        public static float Distance(in Sphere a, in Line3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a line and a circle (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Line2, in Circle)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Line2 a, Circle b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Line2 a, in Circle b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a circle and a line (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Circle a, Line2 b) => Distance(b, a);
+        public static float Distance(in Circle a, in Line2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a line and a sphere (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, Sphere b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Line3 a, in Sphere b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a sphere and a line (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Line3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Sphere a, in Line3 b) => Overlaps(b, a);
         /// <summary>Whether a line and a circle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, Circle b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Line2 a, in Circle b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a circle and a line (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Line2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Circle a, in Line2 b) => Overlaps(b, a);
     }
 }

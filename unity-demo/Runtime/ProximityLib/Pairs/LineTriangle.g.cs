@@ -87,43 +87,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a line and a triangle (3D), computed in double: never negative (neither is solid); crossing (or lying in its plane across it), 0 with one common point as both witnesses; ParameterA t with PointA = Origin + t·Direction; where the minimum is not unique (the line parallel to the triangle over it, or parallel to an edge it passes beside), the first minimum among the crossing, the ends of the line's stretch over the triangle against it, and the line against edges AB, BC, CA.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, Triangle3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Line3 a, in Triangle3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a triangle and a line (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Triangle3 a, Line3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Triangle3 a, in Line3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a line and a triangle (2D), computed in double: negative when the line crosses the solid triangle: minus the least sideways translation that clears it, min(highest vertex, −lowest vertex) over the line's normal; witnesses the closest pair of the just-touching line (the first minimum over edges AB, BC, CA), PointA moved back; apart, the closest pair against the edges (the first minimum over AB, BC, CA; a line parallel to the nearest edge: one end of the common stretch); touching, one common point as both witnesses; ParameterA t with PointA = Origin + t·Direction; a degenerate triangle is the segment or point it is (never negative).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Line2 a, Triangle2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Line2 a, in Triangle2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a triangle and a line (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Triangle2 a, Line2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a line and a triangle (3D), computed in double, without the witness points: the Distance of <see cref="Between(Line3, Triangle3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Triangle2 a, in Line2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a line and a triangle (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Line3, in Triangle3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Line3 a, Triangle3 b) => Between(a, b).Distance;
+        public static float Distance(in Line3 a, in Triangle3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a line (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle3 a, Line3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a line and a triangle (2D), computed in double, without the witness points: the Distance of <see cref="Between(Line2, Triangle2)"/>, bit for bit.</summary>
+        public static float Distance(in Triangle3 a, in Line3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a line and a triangle (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Line2, in Triangle2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Line2 a, Triangle2 b) => Between(a, b).Distance;
+        public static float Distance(in Line2 a, in Triangle2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a line (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle2 a, Line2 b) => Distance(b, a);
+        public static float Distance(in Triangle2 a, in Line2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a line and a triangle (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, Triangle3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Line3 a, in Triangle3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a triangle and a line (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle3 a, Line3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle3 a, in Line3 b) => Overlaps(b, a);
         /// <summary>Whether a line and a triangle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line2 a, Triangle2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Line2 a, in Triangle2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a triangle and a line (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle2 a, Line2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle2 a, in Line2 b) => Overlaps(b, a);
     }
 }

@@ -82,28 +82,28 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a point and an AABB (3D), computed in double: negative inside (depth to the nearest face, ties to the lower axis, min face first).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Vector3 a, Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
+        public static DistanceResult3 Between(Vector3 a, in Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
         /// <summary>Closest distance between an AABB and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, Vector3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Aabb3 a, Vector3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and an AABB (2D), computed in double: negative inside (depth to the nearest face, ties to the lower axis, min face first).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Vector2 a, Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
+        public static DistanceResult2 Between(Vector2 a, in Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
         /// <summary>Closest distance between an AABB and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, Vector2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a point and an AABB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, Aabb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Aabb2 a, Vector2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a point and an AABB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, in Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(Vector3 a, in Aabb3 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
         /// <summary>Signed closest distance between an AABB and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(in Aabb3 a, Vector3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a point and an AABB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, Aabb2)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a point and an AABB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, in Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector2 a, Aabb2 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
+        public static float Distance(Vector2 a, in Aabb2 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
         /// <summary>Signed closest distance between an AABB and a point (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Aabb2 a, Vector2 b) => Distance(b, a);
+        public static float Distance(in Aabb2 a, Vector2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
@@ -116,9 +116,9 @@ namespace ProximityLib
         public static bool Overlaps(in Aabb3 a, Vector3 b) => Overlaps(b, a);
         /// <summary>Whether a point and an AABB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2 a, Aabb2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner);
+        public static bool Overlaps(Vector2 a, in Aabb2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner);
         /// <summary>Whether an AABB and a point (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb2 a, Vector2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb2 a, Vector2 b) => Overlaps(b, a);
     }
 }

@@ -95,43 +95,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a point and a capsule (3D), computed in double: negative inside (depth = radius − distance from the point to the axis); PointB lies on the surface along the axis normal through the point (a point on the axis: along <c>AnyPerpendicular</c> of the axis, +X for a zero-length axis); ParameterB is the axis parameter.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Vector3 a, Capsule3 b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
+        public static DistanceResult3 Between(Vector3 a, in Capsule3 b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
         /// <summary>Closest distance between a capsule and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Capsule3 a, Vector3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Capsule3 a, Vector3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and a capsule (2D), computed in double: negative inside (depth = radius − distance from the point to the axis); PointB lies on the boundary along the axis normal through the point (a point on the axis: along the axis's left-hand normal (y, −x), +X for a zero-length axis); ParameterB is the axis parameter.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Vector2 a, Capsule2 b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
+        public static DistanceResult2 Between(Vector2 a, in Capsule2 b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
         /// <summary>Closest distance between a capsule and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Capsule2 a, Vector2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a point and a capsule (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, Capsule3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Capsule2 a, Vector2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a point and a capsule (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, in Capsule3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector3 a, Capsule3 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
+        public static float Distance(Vector3 a, in Capsule3 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
         /// <summary>Signed closest distance between a capsule and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Capsule3 a, Vector3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a point and a capsule (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, Capsule2)"/>, bit for bit.</summary>
+        public static float Distance(in Capsule3 a, Vector3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a point and a capsule (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, in Capsule2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector2 a, Capsule2 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
+        public static float Distance(Vector2 a, in Capsule2 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
         /// <summary>Signed closest distance between a capsule and a point (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Capsule2 a, Vector2 b) => Distance(b, a);
+        public static float Distance(in Capsule2 a, Vector2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and a capsule (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3 a, Capsule3 b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner, out _);
+        public static bool Overlaps(Vector3 a, in Capsule3 b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner, out _);
         /// <summary>Whether a capsule and a point (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule3 a, Vector3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Capsule3 a, Vector3 b) => Overlaps(b, a);
         /// <summary>Whether a point and a capsule (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2 a, Capsule2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner, out _);
+        public static bool Overlaps(Vector2 a, in Capsule2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner, out _);
         /// <summary>Whether a capsule and a point (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Capsule2 a, Vector2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Capsule2 a, Vector2 b) => Overlaps(b, a);
     }
 }

@@ -101,37 +101,37 @@ namespace ProximityLib
         public static DistanceResult3 Between(HalfSpace a, Vector3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and a half-plane (2D), computed in double: Normal·(point − Point), negative inside (minus the depth); witnesses the point and its foot on the boundary.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Vector2 a, HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
+        public static DistanceResult2 Between(Vector2 a, in HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
         /// <summary>Closest distance between a half-plane and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Vector2 b) => Between(b, a).Swapped();
+        public static DistanceResult2 Between(in HalfPlane a, Vector2 b) => Between(b, a).Swapped();
         /// <summary>Signed closest distance between a point and a half-space (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector3 a, HalfSpace b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
+        public static float Distance(Vector3 a, in HalfSpace b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
         /// <summary>Signed closest distance between a half-space and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfSpace a, Vector3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a point and a half-plane (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, HalfPlane)"/>, bit for bit.</summary>
+        public static float Distance(in HalfSpace a, Vector3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a point and a half-plane (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, in HalfPlane)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector2 a, HalfPlane b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
+        public static float Distance(Vector2 a, in HalfPlane b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
         /// <summary>Signed closest distance between a half-plane and a point (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfPlane a, Vector2 b) => Distance(b, a);
+        public static float Distance(in HalfPlane a, Vector2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and a half-space (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3 a, HalfSpace b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner, out _);
+        public static bool Overlaps(Vector3 a, in HalfSpace b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner, out _);
         /// <summary>Whether a half-space and a point (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, Vector3 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfSpace a, Vector3 b) => Overlaps(b, a);
         /// <summary>Whether a point and a half-plane (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2 a, HalfPlane b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner, out _);
+        public static bool Overlaps(Vector2 a, in HalfPlane b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner, out _);
         /// <summary>Whether a half-plane and a point (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, Vector2 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfPlane a, Vector2 b) => Overlaps(b, a);
     }
 }

@@ -82,38 +82,38 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a point and a line (3D), computed in double: never negative; ParameterB is the projection parameter t = Direction·(point − Origin).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Vector3 a, Line3 b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
+        public static DistanceResult3 Between(Vector3 a, in Line3 b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
         /// <summary>Closest distance between a line and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, Vector3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Line3 a, Vector3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and a line (2D), computed in double: never negative; ParameterB is the projection parameter t = Direction·(point − Origin).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Vector2 a, Line2 b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
         /// <summary>Closest distance between a line and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Line2 a, Vector2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a point and a line (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, Line3)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a point and a line (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, in Line3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector3 a, Line3 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
+        public static float Distance(Vector3 a, in Line3 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
         /// <summary>Signed closest distance between a line and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Line3 a, Vector3 b) => Distance(b, a);
+        public static float Distance(in Line3 a, Vector3 b) => Distance(b, a);
         /// <summary>Signed closest distance between a point and a line (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, Line2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector2 a, Line2 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
+        public static float Distance(Vector2 a, in Line2 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
         /// <summary>Signed closest distance between a line and a point (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Line2 a, Vector2 b) => Distance(b, a);
+        public static float Distance(in Line2 a, Vector2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and a line (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3 a, Line3 b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner);
+        public static bool Overlaps(Vector3 a, in Line3 b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner);
         /// <summary>Whether a line and a point (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Line3 a, Vector3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Line3 a, Vector3 b) => Overlaps(b, a);
         /// <summary>Whether a point and a line (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool Overlaps(Vector2 a, Line2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner);

@@ -95,43 +95,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a point and an OBB (3D), computed in double: negative inside (depth to the nearest face).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Vector3 a, Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
+        public static DistanceResult3 Between(Vector3 a, in Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
         /// <summary>Closest distance between an OBB and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Obb3 a, Vector3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Obb3 a, Vector3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and an OBB (2D), computed in double: negative inside (depth to the nearest face).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Vector2 a, Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
+        public static DistanceResult2 Between(Vector2 a, in Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
         /// <summary>Closest distance between an OBB and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Obb2 a, Vector2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a point and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, Obb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Obb2 a, Vector2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a point and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, in Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector3 a, Obb3 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
+        public static float Distance(Vector3 a, in Obb3 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
         /// <summary>Signed closest distance between an OBB and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb3 a, Vector3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a point and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, Obb2)"/>, bit for bit.</summary>
+        public static float Distance(in Obb3 a, Vector3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a point and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, in Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector2 a, Obb2 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
+        public static float Distance(Vector2 a, in Obb2 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
         /// <summary>Signed closest distance between an OBB and a point (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb2 a, Vector2 b) => Distance(b, a);
+        public static float Distance(in Obb2 a, Vector2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and an OBB (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3 a, Obb3 b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner, out _);
+        public static bool Overlaps(Vector3 a, in Obb3 b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner, out _);
         /// <summary>Whether an OBB and a point (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb3 a, Vector3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb3 a, Vector3 b) => Overlaps(b, a);
         /// <summary>Whether a point and an OBB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2 a, Obb2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner, out _);
+        public static bool Overlaps(Vector2 a, in Obb2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner, out _);
         /// <summary>Whether an OBB and a point (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb2 a, Vector2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb2 a, Vector2 b) => Overlaps(b, a);
     }
 }

@@ -82,43 +82,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a point and a ray (3D), computed in double: never negative; ParameterB is the projection parameter t = Direction·(point − Origin) clamped at 0 (the origin for a point behind the ray).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Vector3 a, Ray3 b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
+        public static DistanceResult3 Between(Vector3 a, in Ray3 b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
         /// <summary>Closest distance between a ray and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Ray3 a, Vector3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Ray3 a, Vector3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and a ray (2D), computed in double: never negative; ParameterB is the projection parameter t = Direction·(point − Origin) clamped at 0 (the origin for a point behind the ray).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Vector2 a, Ray2 b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
         /// <summary>Closest distance between a ray and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(Ray2 a, Vector2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a point and a ray (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, Ray3)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a point and a ray (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, in Ray3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector3 a, Ray3 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
+        public static float Distance(Vector3 a, in Ray3 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
         /// <summary>Signed closest distance between a ray and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Ray3 a, Vector3 b) => Distance(b, a);
+        public static float Distance(in Ray3 a, Vector3 b) => Distance(b, a);
         /// <summary>Signed closest distance between a point and a ray (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, Ray2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector2 a, Ray2 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
+        public static float Distance(Vector2 a, in Ray2 b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
         /// <summary>Signed closest distance between a ray and a point (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Ray2 a, Vector2 b) => Distance(b, a);
+        public static float Distance(in Ray2 a, Vector2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and a ray (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3 a, Ray3 b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner);
+        public static bool Overlaps(Vector3 a, in Ray3 b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner);
         /// <summary>Whether a ray and a point (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray3 a, Vector3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Ray3 a, Vector3 b) => Overlaps(b, a);
         /// <summary>Whether a point and a ray (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2 a, Ray2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner);
+        public static bool Overlaps(Vector2 a, in Ray2 b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner);
         /// <summary>Whether a ray and a point (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray2 a, Vector2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Ray2 a, Vector2 b) => Overlaps(b, a);
     }
 }

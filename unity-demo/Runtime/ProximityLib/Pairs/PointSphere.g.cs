@@ -95,43 +95,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a point and a sphere (3D), computed in double: negative inside (depth = radius − |a − center|); a point at the center is pushed out along +X.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Vector3 a, Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
+        public static DistanceResult3 Between(Vector3 a, in Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Core((Dbl.Vector3D)a, b.Inner, out _));
         /// <summary>Closest distance between a sphere and a point (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Vector3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Sphere a, Vector3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a point and a circle (2D), computed in double: negative inside (depth = radius − |a − center|); a point at the center is pushed out along +X.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Vector2 a, Circle b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
+        public static DistanceResult2 Between(Vector2 a, in Circle b) => new DistanceResult2(Dbl.ClosestDistance.Core((Dbl.Vector2D)a, b.Inner, out _));
         /// <summary>Closest distance between a circle and a point (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Vector2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a point and a sphere (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, Sphere)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Circle a, Vector2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a point and a sphere (3D), computed in double, without the witness points: the Distance of <see cref="Between(Vector3, in Sphere)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector3 a, Sphere b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
+        public static float Distance(Vector3 a, in Sphere b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector3D)a, b.Inner, out _);
         /// <summary>Signed closest distance between a sphere and a point (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Sphere a, Vector3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a point and a circle (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, Circle)"/>, bit for bit.</summary>
+        public static float Distance(in Sphere a, Vector3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a point and a circle (2D), computed in double, without the witness points: the Distance of <see cref="Between(Vector2, in Circle)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Vector2 a, Circle b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
+        public static float Distance(Vector2 a, in Circle b) => (float)Dbl.ClosestDistance.DistanceCore((Dbl.Vector2D)a, b.Inner, out _);
         /// <summary>Signed closest distance between a circle and a point (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Circle a, Vector2 b) => Distance(b, a);
+        public static float Distance(in Circle a, Vector2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a point and a sphere (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector3 a, Sphere b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner, out _);
+        public static bool Overlaps(Vector3 a, in Sphere b) => Dbl.ProximityQuery.Core((Dbl.Vector3D)a, b.Inner, out _);
         /// <summary>Whether a sphere and a point (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Vector3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Sphere a, Vector3 b) => Overlaps(b, a);
         /// <summary>Whether a point and a circle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Vector2 a, Circle b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner, out _);
+        public static bool Overlaps(Vector2 a, in Circle b) => Dbl.ProximityQuery.Core((Dbl.Vector2D)a, b.Inner, out _);
         /// <summary>Whether a circle and a point (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Vector2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Circle a, Vector2 b) => Overlaps(b, a);
     }
 }

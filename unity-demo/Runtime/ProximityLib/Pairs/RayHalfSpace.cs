@@ -8,21 +8,21 @@ namespace ProximityLib.Double
     {
         /// <summary>Closest distance between a ray and a half-space (3D): a ray heading inward (Normal·Direction &lt; 0, by its exact sign) penetrates without bound: Distance = −∞ (DistanceSquared 0) with both witnesses at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction, when it starts outside, or at the origin (t = 0) when it starts inside or on the boundary (also should the crossing lie beyond the double range). Otherwise (outward or parallel) the origin is lowest: the height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary. Algorithm: two dot products from the stored boundary point and one division.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult3 Core(Ray3 a, HalfSpace b, out bool inRange) => Kernels.LineHalfSpace(a.Origin, a.Direction, true, b.Normal, b.Point, out inRange);
+        internal static DistanceResult3 Core(in Ray3 a, in HalfSpace b, out bool inRange) => Kernels.LineHalfSpace(a.Origin, a.Direction, true, b.Normal, b.Point, out inRange);
         /// <summary>Closest distance between a ray and a half-plane (2D): a ray heading inward (Normal·Direction &lt; 0, by its exact sign) penetrates without bound: Distance = −∞ (DistanceSquared 0) with both witnesses at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction, when it starts outside, or at the origin (t = 0) when it starts inside or on the boundary (also should the crossing lie beyond the double range). Otherwise (outward or parallel) the origin is lowest: the height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary. Algorithm: two dot products from the stored boundary point and one division.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult2 Core(Ray2 a, HalfPlane b, out bool inRange) => Kernels.LineHalfSpace(a.Origin.To3(), a.Direction.To3(), true, b.Normal.To3(), b.Point.To3(), out inRange).To2();
+        internal static DistanceResult2 Core(in Ray2 a, in HalfPlane b, out bool inRange) => Kernels.LineHalfSpace(a.Origin.To3(), a.Direction.To3(), true, b.Normal.To3(), b.Point.To3(), out inRange).To2();
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static double DistanceCore(Ray3 a, HalfSpace b, out bool inRange) => Kernels.LineHalfSpaceDistance(a.Origin, a.Direction, true, b.Normal, b.Point, out inRange);
+        internal static double DistanceCore(in Ray3 a, in HalfSpace b, out bool inRange) => Kernels.LineHalfSpaceDistance(a.Origin, a.Direction, true, b.Normal, b.Point, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static double DistanceCore(Ray2 a, HalfPlane b, out bool inRange) => Kernels.LineHalfSpaceDistance(a.Origin.To3(), a.Direction.To3(), true, b.Normal.To3(), b.Point.To3(), out inRange);
+        internal static double DistanceCore(in Ray2 a, in HalfPlane b, out bool inRange) => Kernels.LineHalfSpaceDistance(a.Origin.To3(), a.Direction.To3(), true, b.Normal.To3(), b.Point.To3(), out inRange);
     }
 
     public static partial class ProximityQuery
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Ray3 a, HalfSpace b, out bool inRange) => Kernels.LineHalfSpaceOverlaps(a.Origin, a.Direction, true, b.Normal, b.Point, out inRange);
+        internal static bool Core(in Ray3 a, in HalfSpace b, out bool inRange) => Kernels.LineHalfSpaceOverlaps(a.Origin, a.Direction, true, b.Normal, b.Point, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(Ray2 a, HalfPlane b, out bool inRange) => Kernels.LineHalfSpaceOverlaps(a.Origin.To3(), a.Direction.To3(), true, b.Normal.To3(), b.Point.To3(), out inRange);
+        internal static bool Core(in Ray2 a, in HalfPlane b, out bool inRange) => Kernels.LineHalfSpaceOverlaps(a.Origin.To3(), a.Direction.To3(), true, b.Normal.To3(), b.Point.To3(), out inRange);
     }
 }

@@ -95,43 +95,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a ray and a half-space (3D), computed in double: a ray heading inward (Normal·Direction &lt; 0, by its exact sign) penetrates without bound: Distance = −∞ (DistanceSquared 0) with both witnesses at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction, when it starts outside, or at the origin (t = 0) when it starts inside or on the boundary (also should the crossing lie beyond the double range). Otherwise (outward or parallel) the origin is lowest: the height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Ray3 a, HalfSpace b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Ray3 a, in HalfSpace b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a half-space and a ray (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(HalfSpace a, Ray3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in HalfSpace a, in Ray3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a ray and a half-plane (2D), computed in double: a ray heading inward (Normal·Direction &lt; 0, by its exact sign) penetrates without bound: Distance = −∞ (DistanceSquared 0) with both witnesses at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction, when it starts outside, or at the origin (t = 0) when it starts inside or on the boundary (also should the crossing lie beyond the double range). Otherwise (outward or parallel) the origin is lowest: the height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Ray2 a, HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Ray2 a, in HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a half-plane and a ray (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Ray2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a ray and a half-space (3D), computed in double, without the witness points: the Distance of <see cref="Between(Ray3, HalfSpace)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in HalfPlane a, in Ray2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a ray and a half-space (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Ray3, in HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Ray3 a, HalfSpace b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Ray3 a, in HalfSpace b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a half-space and a ray (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfSpace a, Ray3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a ray and a half-plane (2D), computed in double, without the witness points: the Distance of <see cref="Between(Ray2, HalfPlane)"/>, bit for bit.</summary>
+        public static float Distance(in HalfSpace a, in Ray3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a ray and a half-plane (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Ray2, in HalfPlane)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Ray2 a, HalfPlane b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Ray2 a, in HalfPlane b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a half-plane and a ray (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfPlane a, Ray2 b) => Distance(b, a);
+        public static float Distance(in HalfPlane a, in Ray2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a ray and a half-space (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray3 a, HalfSpace b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Ray3 a, in HalfSpace b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a half-space and a ray (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, Ray3 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfSpace a, in Ray3 b) => Overlaps(b, a);
         /// <summary>Whether a ray and a half-plane (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray2 a, HalfPlane b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Ray2 a, in HalfPlane b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a half-plane and a ray (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, Ray2 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfPlane a, in Ray2 b) => Overlaps(b, a);
     }
 }

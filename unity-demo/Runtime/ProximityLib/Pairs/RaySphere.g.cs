@@ -95,43 +95,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a ray and a sphere (3D), computed in double: negative when the ray enters the sphere (depth = radius − distance from the center to the ray); PointB on the sphere along the normal from the ray (a center on the ray: PointB = center − <c>AnyPerpendicular</c>(direction)·radius); ParameterA is the ray's t, the projection clamped at 0.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Ray3 a, Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Ray3 a, in Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a sphere and a ray (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Ray3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Sphere a, in Ray3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a ray and a circle (2D), computed in double: negative when the ray enters the circle (depth = radius − distance from the center to the ray); PointB on the circle along the normal from the ray (a center on the ray: PointB = center − (y, −x)·radius for the direction (x, y)); ParameterA is the ray's t, the projection clamped at 0.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Ray2 a, Circle b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Ray2 a, in Circle b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a circle and a ray (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Ray2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a ray and a sphere (3D), computed in double, without the witness points: the Distance of <see cref="Between(Ray3, Sphere)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Circle a, in Ray2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a ray and a sphere (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Ray3, in Sphere)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Ray3 a, Sphere b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Ray3 a, in Sphere b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a sphere and a ray (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Sphere a, Ray3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a ray and a circle (2D), computed in double, without the witness points: the Distance of <see cref="Between(Ray2, Circle)"/>, bit for bit.</summary>
+        public static float Distance(in Sphere a, in Ray3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a ray and a circle (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Ray2, in Circle)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Ray2 a, Circle b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Ray2 a, in Circle b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a circle and a ray (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Circle a, Ray2 b) => Distance(b, a);
+        public static float Distance(in Circle a, in Ray2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a ray and a sphere (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray3 a, Sphere b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Ray3 a, in Sphere b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a sphere and a ray (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Ray3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Sphere a, in Ray3 b) => Overlaps(b, a);
         /// <summary>Whether a ray and a circle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray2 a, Circle b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Ray2 a, in Circle b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a circle and a ray (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Ray2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Circle a, in Ray2 b) => Overlaps(b, a);
     }
 }

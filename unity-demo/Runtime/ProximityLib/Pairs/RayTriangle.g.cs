@@ -87,43 +87,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a ray and a triangle (3D), computed in double: never negative (neither is solid); crossing (or lying in its plane across it), 0 with one common point as both witnesses; ParameterA t ≥ 0 with PointA = Origin + t·Direction (pointing away: the origin); where the minimum is not unique (the ray parallel to the triangle over it, or parallel to an edge it passes beside), the first minimum among the crossing, the ends of the ray's stretch over the triangle against it, and the ray against edges AB, BC, CA.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Ray3 a, Triangle3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Ray3 a, in Triangle3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a triangle and a ray (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Triangle3 a, Ray3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Triangle3 a, in Ray3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a ray and a triangle (2D), computed in double: negative when the ray enters the solid triangle: minus the least translation that clears it, sideways (min(highest vertex, −lowest vertex) over the ray's normal) or back along the outward normal of an edge the ray leaves through (n·Direction ≥ 0), by the distance from the origin to that edge's line (equal pushes: the first over the normals of AB, AC, BC, then the ray's normal); witnesses the closest pair of the just-touching ray (the first minimum over edges AB, BC, CA), PointA moved back; apart, the closest pair against the edges (the first minimum over AB, BC, CA); touching, one common point as both witnesses; ParameterA t ≥ 0 with PointA = Origin + t·Direction; a degenerate triangle is the segment or point it is (never negative).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Ray2 a, Triangle2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Ray2 a, in Triangle2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a triangle and a ray (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Triangle2 a, Ray2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a ray and a triangle (3D), computed in double, without the witness points: the Distance of <see cref="Between(Ray3, Triangle3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Triangle2 a, in Ray2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a ray and a triangle (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Ray3, in Triangle3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Ray3 a, Triangle3 b) => Between(a, b).Distance;
+        public static float Distance(in Ray3 a, in Triangle3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a ray (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle3 a, Ray3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a ray and a triangle (2D), computed in double, without the witness points: the Distance of <see cref="Between(Ray2, Triangle2)"/>, bit for bit.</summary>
+        public static float Distance(in Triangle3 a, in Ray3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a ray and a triangle (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Ray2, in Triangle2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Ray2 a, Triangle2 b) => Between(a, b).Distance;
+        public static float Distance(in Ray2 a, in Triangle2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a triangle and a ray (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle2 a, Ray2 b) => Distance(b, a);
+        public static float Distance(in Triangle2 a, in Ray2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a ray and a triangle (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray3 a, Triangle3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Ray3 a, in Triangle3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a triangle and a ray (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle3 a, Ray3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle3 a, in Ray3 b) => Overlaps(b, a);
         /// <summary>Whether a ray and a triangle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray2 a, Triangle2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Ray2 a, in Triangle2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a triangle and a ray (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle2 a, Ray2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Triangle2 a, in Ray2 b) => Overlaps(b, a);
     }
 }

@@ -87,43 +87,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a segment and an AABB (3D), computed in double: negative when the segment enters the box (minimum translation over the separating-axis candidates).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Segment3 a, Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Segment3 a, in Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an AABB and a segment (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, Segment3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Aabb3 a, in Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and an AABB (2D), computed in double: negative when the segment enters the box (minimum translation over the separating-axis candidates).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Segment2 a, in Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an AABB and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, Segment2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a segment and an AABB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Segment3, Aabb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Aabb2 a, in Segment2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a segment and an AABB (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Segment3, in Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Segment3 a, Aabb3 b) => Between(a, b).Distance;
+        public static float Distance(in Segment3 a, in Aabb3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an AABB and a segment (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Aabb3 a, Segment3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a segment and an AABB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Segment2, Aabb2)"/>, bit for bit.</summary>
+        public static float Distance(in Aabb3 a, in Segment3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a segment and an AABB (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Segment2, in Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Segment2 a, Aabb2 b) => Between(a, b).Distance;
+        public static float Distance(in Segment2 a, in Aabb2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an AABB and a segment (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Aabb2 a, Segment2 b) => Distance(b, a);
+        public static float Distance(in Aabb2 a, in Segment2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and an AABB (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment3 a, Aabb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Segment3 a, in Aabb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an AABB and a segment (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb3 a, Segment3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb3 a, in Segment3 b) => Overlaps(b, a);
         /// <summary>Whether a segment and an AABB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment2 a, Aabb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Segment2 a, in Aabb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an AABB and a segment (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb2 a, Segment2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb2 a, in Segment2 b) => Overlaps(b, a);
     }
 }

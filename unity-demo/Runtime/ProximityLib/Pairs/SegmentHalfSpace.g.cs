@@ -101,22 +101,22 @@ namespace ProximityLib
         public static DistanceResult3 Between(HalfSpace a, Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and a half-plane (2D), computed in double: the lower endpoint's height Normal·(end − Point), negative when the segment enters (minus the depth of its deepest end); witnesses that endpoint (ParameterA 0 or 1) and its foot on the boundary. A segment parallel to the boundary (equal heights) is witnessed at Start.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Segment2 a, in HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a half-plane and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Segment2 b) => Between(b, a).Swapped();
+        public static DistanceResult2 Between(in HalfPlane a, in Segment2 b) => Between(b, a).Swapped();
         /// <summary>Signed closest distance between a segment and a half-space (3D), computed in double, without the witness points: the Distance of <see cref="Between(Segment3, HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Segment3 a, HalfSpace b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Segment3 a, in HalfSpace b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a half-space and a segment (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfSpace a, Segment3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a segment and a half-plane (2D), computed in double, without the witness points: the Distance of <see cref="Between(Segment2, HalfPlane)"/>, bit for bit.</summary>
+        public static float Distance(in HalfSpace a, in Segment3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a segment and a half-plane (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Segment2, in HalfPlane)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Segment2 a, HalfPlane b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Segment2 a, in HalfPlane b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a half-plane and a segment (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfPlane a, Segment2 b) => Distance(b, a);
+        public static float Distance(in HalfPlane a, in Segment2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery

@@ -87,43 +87,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a segment and an OBB (3D), computed in double: negative when the segment enters the box (minimum translation over the separating-axis candidates).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Segment3 a, Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Segment3 a, in Obb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an OBB and a segment (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Obb3 a, Segment3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Obb3 a, in Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and an OBB (2D), computed in double: negative when the segment enters the box (minimum translation over the separating-axis candidates).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Segment2 a, in Obb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an OBB and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Obb2 a, Segment2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a segment and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Segment3, Obb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Obb2 a, in Segment2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a segment and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Segment3, in Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Segment3 a, Obb3 b) => Between(a, b).Distance;
+        public static float Distance(in Segment3 a, in Obb3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an OBB and a segment (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb3 a, Segment3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a segment and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Segment2, Obb2)"/>, bit for bit.</summary>
+        public static float Distance(in Obb3 a, in Segment3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a segment and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Segment2, in Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Segment2 a, Obb2 b) => Between(a, b).Distance;
+        public static float Distance(in Segment2 a, in Obb2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an OBB and a segment (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Obb2 a, Segment2 b) => Distance(b, a);
+        public static float Distance(in Obb2 a, in Segment2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and an OBB (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment3 a, Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Segment3 a, in Obb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an OBB and a segment (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb3 a, Segment3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb3 a, in Segment3 b) => Overlaps(b, a);
         /// <summary>Whether a segment and an OBB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment2 a, Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Segment2 a, in Obb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an OBB and a segment (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Obb2 a, Segment2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Obb2 a, in Segment2 b) => Overlaps(b, a);
     }
 }

@@ -91,43 +91,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a segment and a ray (3D), computed in double: never negative; for a segment parallel to the ray the first endpoint minimum of the segment kernel on the cut ray; ParameterA is the segment parameter, ParameterB the ray's t ≥ 0.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Segment3 a, Ray3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Segment3 a, in Ray3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a ray and a segment (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Ray3 a, Segment3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Ray3 a, in Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and a ray (2D), computed in double: never negative (0 where they cross); for a segment parallel to the ray the first endpoint minimum of the segment kernel on the cut ray; ParameterA is the segment parameter, ParameterB the ray's t ≥ 0.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, Ray2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Segment2 a, in Ray2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a ray and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Ray2 a, Segment2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a segment and a ray (3D), computed in double, without the witness points: the Distance of <see cref="Between(Segment3, Ray3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Ray2 a, in Segment2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a segment and a ray (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Segment3, in Ray3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(Segment3 a, Ray3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a ray and a segment (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(Ray3 a, Segment3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a segment and a ray (2D), computed in double, without the witness points: the Distance of <see cref="Between(Segment2, Ray2)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a segment and a ray (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Segment2, in Ray2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Segment2 a, Ray2 b) => Between(a, b).Distance;
+        public static float Distance(in Segment2 a, in Ray2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between a ray and a segment (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Ray2 a, Segment2 b) => Distance(b, a);
+        public static float Distance(in Ray2 a, in Segment2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and a ray (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment3 a, Ray3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Segment3 a, in Ray3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a ray and a segment (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray3 a, Segment3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Ray3 a, in Segment3 b) => Overlaps(b, a);
         /// <summary>Whether a segment and a ray (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment2 a, Ray2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Segment2 a, in Ray2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a ray and a segment (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Ray2 a, Segment2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Ray2 a, in Segment2 b) => Overlaps(b, a);
     }
 }

@@ -95,43 +95,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a segment and a sphere (3D), computed in double: negative when the segment enters the sphere (depth = radius − distance from center to segment).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Segment3 a, Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Segment3 a, in Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a sphere and a segment (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Segment3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Sphere a, in Segment3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a segment and a circle (2D), computed in double: negative when the segment enters the sphere (depth = radius − distance from center to segment).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Segment2 a, Circle b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Segment2 a, in Circle b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a circle and a segment (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Segment2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a segment and a sphere (3D), computed in double, without the witness points: the Distance of <see cref="Between(Segment3, Sphere)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Circle a, in Segment2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a segment and a sphere (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Segment3, in Sphere)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Segment3 a, Sphere b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Segment3 a, in Sphere b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a sphere and a segment (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Sphere a, Segment3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a segment and a circle (2D), computed in double, without the witness points: the Distance of <see cref="Between(Segment2, Circle)"/>, bit for bit.</summary>
+        public static float Distance(in Sphere a, in Segment3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a segment and a circle (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Segment2, in Circle)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Segment2 a, Circle b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Segment2 a, in Circle b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a circle and a segment (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Circle a, Segment2 b) => Distance(b, a);
+        public static float Distance(in Circle a, in Segment2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a segment and a sphere (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment3 a, Sphere b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Segment3 a, in Sphere b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a sphere and a segment (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Segment3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Sphere a, in Segment3 b) => Overlaps(b, a);
         /// <summary>Whether a segment and a circle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Segment2 a, Circle b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Segment2 a, in Circle b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a circle and a segment (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Segment2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Circle a, in Segment2 b) => Overlaps(b, a);
     }
 }

@@ -95,43 +95,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a sphere and an AABB (3D), computed in double: negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Sphere a, in Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an AABB and a sphere (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, Sphere b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Aabb3 a, in Sphere b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a circle and an AABB (2D), computed in double: negative when overlapping (depth = radius − gap, or radius + face depth when the center is inside).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Circle a, in Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an AABB and a circle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, Circle b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a sphere and an AABB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Sphere, Aabb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Aabb2 a, in Circle b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a sphere and an AABB (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Sphere, in Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Sphere a, Aabb3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Sphere a, in Aabb3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between an AABB and a sphere (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Aabb3 a, Sphere b) => Distance(b, a);
-        /// <summary>Signed closest distance between a circle and an AABB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Circle, Aabb2)"/>, bit for bit.</summary>
+        public static float Distance(in Aabb3 a, in Sphere b) => Distance(b, a);
+        /// <summary>Signed closest distance between a circle and an AABB (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Circle, in Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Circle a, Aabb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Circle a, in Aabb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between an AABB and a circle (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Aabb2 a, Circle b) => Distance(b, a);
+        public static float Distance(in Aabb2 a, in Circle b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and an AABB (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, Aabb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Sphere a, in Aabb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an AABB and a sphere (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb3 a, Sphere b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb3 a, in Sphere b) => Overlaps(b, a);
         /// <summary>Whether a circle and an AABB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Aabb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Circle a, in Aabb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an AABB and a circle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb2 a, Circle b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb2 a, in Circle b) => Overlaps(b, a);
     }
 }

@@ -95,43 +95,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a sphere and a half-space (3D), computed in double: the center's height Normal·(center − Point) less the radius, negative when overlapping; witnesses the sphere's lowest point center − Normal·radius and the center's foot on the boundary.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, HalfSpace b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Sphere a, in HalfSpace b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a half-space and a sphere (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(HalfSpace a, Sphere b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in HalfSpace a, in Sphere b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a circle and a half-plane (2D), computed in double: the center's height Normal·(center − Point) less the radius, negative when overlapping; witnesses the circle's lowest point center − Normal·radius and the center's foot on the boundary.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Circle a, in HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a half-plane and a circle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Circle b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a sphere and a half-space (3D), computed in double, without the witness points: the Distance of <see cref="Between(Sphere, HalfSpace)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in HalfPlane a, in Circle b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a sphere and a half-space (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Sphere, in HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(Sphere a, HalfSpace b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a half-space and a sphere (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(HalfSpace a, Sphere b) => Distance(b, a);
-        /// <summary>Signed closest distance between a circle and a half-plane (2D), computed in double, without the witness points: the Distance of <see cref="Between(Circle, HalfPlane)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a circle and a half-plane (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Circle, in HalfPlane)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Circle a, HalfPlane b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Circle a, in HalfPlane b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a half-plane and a circle (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfPlane a, Circle b) => Distance(b, a);
+        public static float Distance(in HalfPlane a, in Circle b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a sphere and a half-space (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Sphere a, HalfSpace b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Sphere a, in HalfSpace b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a half-space and a sphere (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, Sphere b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfSpace a, in Sphere b) => Overlaps(b, a);
         /// <summary>Whether a circle and a half-plane (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, HalfPlane b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Circle a, in HalfPlane b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a half-plane and a circle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, Circle b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfPlane a, in Circle b) => Overlaps(b, a);
     }
 }

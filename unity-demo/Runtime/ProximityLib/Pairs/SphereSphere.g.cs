@@ -77,16 +77,16 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a sphere and a sphere (3D), computed in double: negative when overlapping (depth = ra + rb − |ca − cb|); coincident centers push the smaller sphere along +X (the larger along −X), whichever argument it is.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Sphere a, Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Sphere a, in Sphere b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a circle and a circle (2D), computed in double: negative when overlapping (depth = ra + rb − |ca − cb|); coincident centers push the smaller sphere along +X (the larger along −X), whichever argument it is.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Circle a, Circle b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
-        /// <summary>Signed closest distance between a sphere and a sphere (3D), computed in double, without the witness points: the Distance of <see cref="Between(Sphere, Sphere)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Circle a, in Circle b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        /// <summary>Signed closest distance between a sphere and a sphere (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Sphere, in Sphere)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(in Sphere a, in Sphere b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
-        /// <summary>Signed closest distance between a circle and a circle (2D), computed in double, without the witness points: the Distance of <see cref="Between(Circle, Circle)"/>, bit for bit.</summary>
+        /// <summary>Signed closest distance between a circle and a circle (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Circle, in Circle)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Circle a, Circle b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Circle a, in Circle b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
     }
 
     public static partial class ProximityQuery
@@ -96,6 +96,6 @@ namespace ProximityLib
         public static bool Overlaps(in Sphere a, in Sphere b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a circle and a circle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Circle a, Circle b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Circle a, in Circle b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
     }
 }

@@ -87,43 +87,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a triangle and an AABB (3D), computed in double: negative when the triangle enters the box (minimum translation of the triangle over the 13 separating axes); apart, the first minimum among the triangle's edges AB, BC, CA against the box, then the box's edges against the triangle.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Triangle3 a, Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Triangle3 a, in Aabb3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an AABB and a triangle (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Aabb3 a, Triangle3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in Aabb3 a, in Triangle3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a triangle and an AABB (2D), computed in double: negative when the solid triangle and the box overlap (minimum translation of the triangle over the box's and the triangle's edge normals); apart, the first minimum among the triangle's edges AB, BC, CA against the box.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Triangle2 a, Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Triangle2 a, in Aabb2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between an AABB and a triangle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Aabb2 a, Triangle2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a triangle and an AABB (3D), computed in double, without the witness points: the Distance of <see cref="Between(Triangle3, Aabb3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Aabb2 a, in Triangle2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a triangle and an AABB (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Triangle3, in Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle3 a, Aabb3 b) => Between(a, b).Distance;
+        public static float Distance(in Triangle3 a, in Aabb3 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an AABB and a triangle (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Aabb3 a, Triangle3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a triangle and an AABB (2D), computed in double, without the witness points: the Distance of <see cref="Between(Triangle2, Aabb2)"/>, bit for bit.</summary>
+        public static float Distance(in Aabb3 a, in Triangle3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a triangle and an AABB (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Triangle2, in Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle2 a, Aabb2 b) => Between(a, b).Distance;
+        public static float Distance(in Triangle2 a, in Aabb2 b) => Between(a, b).Distance;
         /// <summary>Signed closest distance between an AABB and a triangle (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Aabb2 a, Triangle2 b) => Distance(b, a);
+        public static float Distance(in Aabb2 a, in Triangle2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a triangle and an AABB (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle3 a, Aabb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Triangle3 a, in Aabb3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an AABB and a triangle (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb3 a, Triangle3 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb3 a, in Triangle3 b) => Overlaps(b, a);
         /// <summary>Whether a triangle and an AABB (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle2 a, Aabb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Triangle2 a, in Aabb2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether an AABB and a triangle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Aabb2 a, Triangle2 b) => Overlaps(b, a);
+        public static bool Overlaps(in Aabb2 a, in Triangle2 b) => Overlaps(b, a);
     }
 }

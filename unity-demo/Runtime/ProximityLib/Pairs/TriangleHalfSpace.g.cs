@@ -95,43 +95,43 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a triangle and a half-space (3D), computed in double: the lowest vertex's height Normal·(vertex − Point), negative when the triangle enters (minus the depth of its deepest vertex); witnesses that vertex and its foot on the boundary, the first of A, B, C among equally low ones (an edge or the whole triangle parallel to the boundary).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Triangle3 a, HalfSpace b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Triangle3 a, in HalfSpace b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a half-space and a triangle (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(HalfSpace a, Triangle3 b) => Between(b, a).Swapped();
+        public static DistanceResult3 Between(in HalfSpace a, in Triangle3 b) => Between(b, a).Swapped();
         /// <summary>Closest distance between a triangle and a half-plane (2D), computed in double: the lowest vertex's height Normal·(vertex − Point), negative when the triangle enters (minus the depth of its deepest vertex); witnesses that vertex and its foot on the boundary, the first of A, B, C among equally low ones (an edge or the whole triangle parallel to the boundary).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Triangle2 a, HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Triangle2 a, in HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a half-plane and a triangle (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(HalfPlane a, Triangle2 b) => Between(b, a).Swapped();
-        /// <summary>Signed closest distance between a triangle and a half-space (3D), computed in double, without the witness points: the Distance of <see cref="Between(Triangle3, HalfSpace)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in HalfPlane a, in Triangle2 b) => Between(b, a).Swapped();
+        /// <summary>Signed closest distance between a triangle and a half-space (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Triangle3, in HalfSpace)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle3 a, HalfSpace b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Triangle3 a, in HalfSpace b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a half-space and a triangle (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfSpace a, Triangle3 b) => Distance(b, a);
-        /// <summary>Signed closest distance between a triangle and a half-plane (2D), computed in double, without the witness points: the Distance of <see cref="Between(Triangle2, HalfPlane)"/>, bit for bit.</summary>
+        public static float Distance(in HalfSpace a, in Triangle3 b) => Distance(b, a);
+        /// <summary>Signed closest distance between a triangle and a half-plane (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Triangle2, in HalfPlane)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle2 a, HalfPlane b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
+        public static float Distance(in Triangle2 a, in HalfPlane b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a half-plane and a triangle (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(HalfPlane a, Triangle2 b) => Distance(b, a);
+        public static float Distance(in HalfPlane a, in Triangle2 b) => Distance(b, a);
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a triangle and a half-space (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle3 a, HalfSpace b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Triangle3 a, in HalfSpace b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a half-space and a triangle (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfSpace a, Triangle3 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfSpace a, in Triangle3 b) => Overlaps(b, a);
         /// <summary>Whether a triangle and a half-plane (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle2 a, HalfPlane b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Triangle2 a, in HalfPlane b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a half-plane and a triangle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(HalfPlane a, Triangle2 b) => Overlaps(b, a);
+        public static bool Overlaps(in HalfPlane a, in Triangle2 b) => Overlaps(b, a);
     }
 }

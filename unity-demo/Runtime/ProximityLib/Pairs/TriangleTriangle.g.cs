@@ -69,25 +69,25 @@ namespace ProximityLib
     {
         /// <summary>Closest distance between a triangle and a triangle (3D), computed in double: never negative (neither is solid); meeting (crossing, coplanar overlapping, touching), 0 with a common point as both witnesses; where the minimum is not unique, the first among the edges AB, BC, CA of the canonically first triangle against the other, then the other's edges, the same in either argument order.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Triangle3 a, Triangle3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Triangle3 a, in Triangle3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
         /// <summary>Closest distance between a triangle and a triangle (2D), computed in double: negative when the solid triangles overlap (minimum translation over the six edge normals); apart, the closest pair over the nine edge pairs; a degenerate triangle is the segment (longest edge) or point it is; the first minimum of the canonically first triangle's edges, the same in either argument order.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(Triangle2 a, Triangle2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
-        /// <summary>Signed closest distance between a triangle and a triangle (3D), computed in double, without the witness points: the Distance of <see cref="Between(Triangle3, Triangle3)"/>, bit for bit.</summary>
+        public static DistanceResult2 Between(in Triangle2 a, in Triangle2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        /// <summary>Signed closest distance between a triangle and a triangle (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Triangle3, in Triangle3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle3 a, Triangle3 b) => Between(a, b).Distance;
-        /// <summary>Signed closest distance between a triangle and a triangle (2D), computed in double, without the witness points: the Distance of <see cref="Between(Triangle2, Triangle2)"/>, bit for bit.</summary>
+        public static float Distance(in Triangle3 a, in Triangle3 b) => Between(a, b).Distance;
+        /// <summary>Signed closest distance between a triangle and a triangle (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Triangle2, in Triangle2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Triangle2 a, Triangle2 b) => Between(a, b).Distance;
+        public static float Distance(in Triangle2 a, in Triangle2 b) => Between(a, b).Distance;
     }
 
     public static partial class ProximityQuery
     {
         /// <summary>Whether a triangle and a triangle (3D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle3 a, Triangle3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Triangle3 a, in Triangle3 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
         /// <summary>Whether a triangle and a triangle (2D) touch or overlap.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool Overlaps(Triangle2 a, Triangle2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
+        public static bool Overlaps(in Triangle2 a, in Triangle2 b) => Dbl.ProximityQuery.Core(a.Inner, b.Inner, out _);
     }
 }
