@@ -151,6 +151,44 @@ namespace ProximityLib.Double
             return new DistanceResult3(dist, d2, onSegment, touching ? onSegment : min + onBox, t, 0);
         }
 
+        /// <summary>The Distance of <see cref="SegmentBox"/>, bit for bit, without the witnesses (<see cref="InFrameDistance"/>).</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static double SegmentBoxDistance(Vector3D a, Vector3D b, in Box box, out bool inRange)
+        {
+            var ra = a - box.Origin;
+            inRange = Range.Box(Range.MaxAbs(ra, b - box.Origin, box.Hi - box.Lo));
+            return InFrameDistance(box.ToLocal(ra), box.ToLocal(b - a), box.Lo, box.Hi, box.Planar, ref inRange);
+        }
+
+        /// <summary>The Distance of <see cref="SegmentAabb"/>, bit for bit, without the witnesses.</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static double SegmentAabbDistance(Vector3D a, Vector3D b, Vector3D min, Vector3D max, out bool inRange)
+        {
+            var ra = a - min;
+            var extent = max - min;
+            inRange = Range.Box(Range.MaxAbs(ra, b - min, extent));
+            return InFrameDistance(ra, b - a, default, extent, false, ref inRange);
+        }
+
+        /// <summary>
+        /// <see cref="InFrame"/>'s distance alone: the same verdict, apart minimum and push depth, without locating the
+        /// witnesses (the box point, and for meeting shapes a second minimisation on the pushed segment: about a third
+        /// of an overlapping query's time).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double InFrameDistance(Vector3D la, Vector3D ld, Vector3D lo, Vector3D hi, bool planar, ref bool inRange)
+        {
+            var c = (lo + hi) * 0.5;
+            var h = (hi - lo) * 0.5;
+            if (!SegmentBoxOverlapsLocal(la - c, ld, h, planar))
+            {
+                double d2 = SegmentBoxLocal(la, ld, lo, hi, out _);
+                inRange &= Range.In(d2);
+                return Math.Sqrt(d2);
+            }
+            return -Num.Max(SegmentBoxPenetration(la - c, ld, h, planar, out _), 0);
+        }
+
         /// <summary>
         /// Segment la + [0, 1]·ld against the box [lo, hi], all box-local: the signed distance, its square (0 when they
         /// meet), the segment parameter and the box witness (box-local; <paramref name="touching"/>: it is the segment's
