@@ -10,6 +10,10 @@ namespace ProximityLib.Double
         /// <summary>Closest distance between a capsule and an OBB (2D): the axis segment's solid signed distance to the box less the radius (negative when overlapping: the axis's depth plus the radius); PointA is the axis witness (ParameterA its t) moved by the radius toward the box (apart) or against the push (overlapping; the face's outward normal when the axis just touches), PointB on the box. Algorithm: segment–box (convex piecewise-quadratic minimisation in the box frame; separating-axis depth, Ericson RTCD §5.3.3), then sd(K ⊕ ball r) = sd(K) − r.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult2 Core(in Capsule2 a, in Obb2 b, out bool inRange) => Kernels.CapsuleBox(a.Start.To3(), a.End.To3(), a.Radius, b.ToBox(), out inRange).To2();
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static double DistanceCore(in Capsule3 a, in Obb3 b, out bool inRange) => Kernels.CapsuleBoxDistance(a.Start, a.End, a.Radius, b.ToBox(), out inRange);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static double DistanceCore(in Capsule2 a, in Obb2 b, out bool inRange) => Kernels.CapsuleBoxDistance(a.Start.To3(), a.End.To3(), a.Radius, b.ToBox(), out inRange);
     }
 
     public static partial class ProximityQuery

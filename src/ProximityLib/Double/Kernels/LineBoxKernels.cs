@@ -127,6 +127,20 @@ namespace ProximityLib.Double
         private static bool RaySlabSeparates(double m, double d, double h) => (m > h && d >= 0) || (m < -h && d <= 0);
 
         /// <summary>
+        /// The Distance of <see cref="CapsuleBox"/>, bit for bit, without the witnesses and the near-touch normal: in every
+        /// branch there the distance is the axis's signed distance to the box less the radius (apart: the gap's root;
+        /// apart by the verdict with a zero squared gap: the push, which is then 0 as that verdict's axis gives a
+        /// negative push; meeting: minus the push), which is <see cref="InFrameDistance"/>'s, under the same range guard.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static double CapsuleBoxDistance(Vector3D a, Vector3D b, double r, in Box box, out bool inRange)
+        {
+            var ra = a - box.Origin;
+            inRange = Range.Box(Num.Max(Num.Max(Range.MaxAbs(ra), r), Num.Max(Range.MaxAbs(b - box.Origin), Range.MaxAbs(box.Hi - box.Lo))));
+            return InFrameDistance(box.ToLocal(ra), box.ToLocal(b - a), box.Lo, box.Hi, box.Planar, ref inRange) - r;
+        }
+
+        /// <summary>
         /// A capsule (axis [a, b], radius r) against a solid box: the axis's solid signed distance (as
         /// <see cref="SegmentBox"/>: the same verdict, minimum and push) less r, and the axis's witness moved by r along the
         /// contact direction: toward the box when apart (the box-local gap vector, normalised), against the push when the

@@ -34,13 +34,21 @@ namespace ProximityLib.Double
         public static DistanceResult2 Between(in Aabb2 a, in Capsule2 b) => Between(b, a).Swapped();
         /// <summary>Signed closest distance between a capsule and an AABB (3D) without the witness points: the Distance of <see cref="Between(in Capsule3, in Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(in Capsule3 a, in Aabb3 b) => Between(a, b).Distance;
+        public static double Distance(in Capsule3 a, in Aabb3 b)
+        {
+            var r = DistanceCore(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b).Distance;
+        }
         /// <summary>Signed closest distance between an AABB and a capsule (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double Distance(in Aabb3 a, in Capsule3 b) => Distance(b, a);
         /// <summary>Signed closest distance between a capsule and an AABB (2D) without the witness points: the Distance of <see cref="Between(in Capsule2, in Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(in Capsule2 a, in Aabb2 b) => Between(a, b).Distance;
+        public static double Distance(in Capsule2 a, in Aabb2 b)
+        {
+            var r = DistanceCore(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b).Distance;
+        }
         /// <summary>Signed closest distance between an AABB and a capsule (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double Distance(in Aabb2 a, in Capsule2 b) => Distance(b, a);
@@ -99,13 +107,13 @@ namespace ProximityLib
         public static DistanceResult2 Between(in Aabb2 a, in Capsule2 b) => Between(b, a).Swapped();
         /// <summary>Signed closest distance between a capsule and an AABB (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Capsule3, in Aabb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(in Capsule3 a, in Aabb3 b) => Between(a, b).Distance;
+        public static float Distance(in Capsule3 a, in Aabb3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between an AABB and a capsule (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(in Aabb3 a, in Capsule3 b) => Distance(b, a);
         /// <summary>Signed closest distance between a capsule and an AABB (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Capsule2, in Aabb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(in Capsule2 a, in Aabb2 b) => Between(a, b).Distance;
+        public static float Distance(in Capsule2 a, in Aabb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between an AABB and a capsule (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(in Aabb2 a, in Capsule2 b) => Distance(b, a);

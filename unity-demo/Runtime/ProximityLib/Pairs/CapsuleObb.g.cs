@@ -34,13 +34,21 @@ namespace ProximityLib.Double
         public static DistanceResult2 Between(in Obb2 a, in Capsule2 b) => Between(b, a).Swapped();
         /// <summary>Signed closest distance between a capsule and an OBB (3D) without the witness points: the Distance of <see cref="Between(in Capsule3, in Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(in Capsule3 a, in Obb3 b) => Between(a, b).Distance;
+        public static double Distance(in Capsule3 a, in Obb3 b)
+        {
+            var r = DistanceCore(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b).Distance;
+        }
         /// <summary>Signed closest distance between an OBB and a capsule (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double Distance(in Obb3 a, in Capsule3 b) => Distance(b, a);
         /// <summary>Signed closest distance between a capsule and an OBB (2D) without the witness points: the Distance of <see cref="Between(in Capsule2, in Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(in Capsule2 a, in Obb2 b) => Between(a, b).Distance;
+        public static double Distance(in Capsule2 a, in Obb2 b)
+        {
+            var r = DistanceCore(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b).Distance;
+        }
         /// <summary>Signed closest distance between an OBB and a capsule (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double Distance(in Obb2 a, in Capsule2 b) => Distance(b, a);
@@ -99,13 +107,13 @@ namespace ProximityLib
         public static DistanceResult2 Between(in Obb2 a, in Capsule2 b) => Between(b, a).Swapped();
         /// <summary>Signed closest distance between a capsule and an OBB (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Capsule3, in Obb3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(in Capsule3 a, in Obb3 b) => Between(a, b).Distance;
+        public static float Distance(in Capsule3 a, in Obb3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between an OBB and a capsule (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(in Obb3 a, in Capsule3 b) => Distance(b, a);
         /// <summary>Signed closest distance between a capsule and an OBB (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Capsule2, in Obb2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(in Capsule2 a, in Obb2 b) => Between(a, b).Distance;
+        public static float Distance(in Capsule2 a, in Obb2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between an OBB and a capsule (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(in Obb2 a, in Capsule2 b) => Distance(b, a);
