@@ -89,8 +89,7 @@ namespace ProximityLib.Double
 
             double depth = Num.Max(SegmentBoxPenetration2(la - c, ld, h, out var dir), 0);
             var moved = la + dir * depth;
-            t = depth > 0 ? PushedEnd(dir.X, dir.Y, 0, ld.X, ld.Y, 0) : double.NaN;
-            if (double.IsNaN(t)) SegmentBoxLocal2(moved, ld, lo, hi, out t);
+            SegmentBoxLocal2(moved, ld, lo, hi, out t);
             d2 = 0;
             onBox = ClampLocal2(moved + ld * t, lo, hi);
             touching = !(depth > 0);

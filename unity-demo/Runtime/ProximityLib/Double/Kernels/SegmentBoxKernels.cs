@@ -219,29 +219,12 @@ namespace ProximityLib.Double
             double depth = Num.Max(SegmentBoxPenetration(la - c, ld, h, planar, out var dir), 0);
             // The segment moved by the push just touches the box: its closest pair there, the segment's point moved back.
             var moved = la + dir * depth;
-            t = depth > 0 ? PushedEnd(dir.X, dir.Y, dir.Z, ld.X, ld.Y, ld.Z) : double.NaN;
-            if (double.IsNaN(t)) SegmentBoxLocal(moved, ld, lo, hi, out t);
+            SegmentBoxLocal(moved, ld, lo, hi, out t);
             d2 = 0;
             onBox = ClampLocal(moved + ld * t, lo, hi);
             touching = !(depth > 0);
             return -depth;
         }
-
-        /// <summary>
-        /// The touching end of a segment pushed out along a box normal (dir = ±e_k, the push's unit direction; d the
-        /// segment's direction), or NaN where the push is along a segment × edge direction or the segment runs along the
-        /// face. Pushed by −e_k·depth, the segment ends in k ≤ −h_k with its largest k-coordinate on that face's plane,
-        /// and the box lies in k ≥ −h_k: a common point is on the plane, so it is the end reaching farthest along +e_k,
-        /// the only point of the segment there when d_k ≠ 0 (likewise for +e_k). So the end is the touching pair's
-        /// segment point without minimising along the segment again, about half of an entering segment's Between.
-        /// </summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double PushedEnd(double nx, double ny, double nz, double dx, double dy, double dz) =>
-            ny == 0 && nz == 0 ? PushedEnd(nx, dx) : nx == 0 && nz == 0 ? PushedEnd(ny, dy) : nx == 0 && ny == 0 ? PushedEnd(nz, dz) : double.NaN;
-
-        /// <summary>Along the push's axis (n = ±1, d the segment's component): 1 when the end b leads against the push, 0 for a, NaN when d = 0.</summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double PushedEnd(double n, double d) => d == 0 ? double.NaN : (n < 0) == (d > 0) ? 1 : 0;
 
         /// <summary>
         /// The least push (box-local) that clears the segment m + [0, 1]·d (relative to the box centre) from the box of
