@@ -82,7 +82,11 @@ namespace ProximityTests.Fuzz
         /// normal toward the min corner was scaled by 2^1022 and overflowed at unit size, not at 2^-10 of it). And edges
         /// crossing at a shallow angle, whose gap was taken along the plain cross product of the directions (turned by
         /// u/sin θ): 127:3000000005535 (3D segment–line at sin θ = 0.015, E = 40.6), and from the shallow space when it was
-        /// added, 1:4000000005217 (3D ray–capsule, E = 56.8) and 1:4000000014209 (3D segment–triangle, an edge).
+        /// added, 1:4000000005217 (3D ray–capsule, E = 56.8) and 1:4000000014209 (3D segment–triangle, an edge). And five
+        /// that a tried shortcut failed (taking, for a segment pushed out of a box along a face normal, its leading end as
+        /// the touching point: in nearly touching, collinear and nearly parallel cases the rounded push picked a face the
+        /// segment does not touch, and the witnesses ended up to 1e5 apart): 2031:46763 and 2031:3000000065803 (2D
+        /// segment–OBB), 2031:16088, 2031:524348 and 2031:3000000072388 (3D segment–OBB).
         /// </summary>
         [TestCase(11, 280751)]
         [TestCase(11, 1579269)]
@@ -119,6 +123,11 @@ namespace ProximityTests.Fuzz
         [TestCase(127, 3000000005535)]
         [TestCase(1, 4000000005217)]
         [TestCase(1, 4000000014209)]
+        [TestCase(2031, 46763)]
+        [TestCase(2031, 3000000065803)]
+        [TestCase(2031, 16088)]
+        [TestCase(2031, 524348)]
+        [TestCase(2031, 3000000072388)]
         public void CasesTheLongModeFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = Checker.Run(FuzzCase.Create(seed, index), exact: true);
