@@ -1,3 +1,4 @@
+using System;
 using System.Numerics;
 using static ProximitySpeed.Source;
 using D = ProximityLib.Double;
@@ -70,4 +71,24 @@ namespace ProximitySpeed
     [Case(Library, Precision.Double, "2D AABB–AABB")] public readonly struct D2AabbAabbDistance : IDistance<D.Aabb2, D.Aabb2> { public double Distance(in D.Aabb2 a, in D.Aabb2 b) => DC.Distance(a, b); }
     [Case(Library, Precision.Double, "2D AABB–OBB")] public readonly struct D2AabbObbDistance : IDistance<D.Aabb2, D.Obb2> { public double Distance(in D.Aabb2 a, in D.Obb2 b) => DC.Distance(a, b); }
     [Case(Library, Precision.Double, "2D OBB–OBB")] public readonly struct D2ObbObbDistance : IDistance<D.Obb2, D.Obb2> { public double Distance(in D.Obb2 a, in D.Obb2 b) => DC.Distance(a, b); }
+
+    internal static partial class BatchCases
+    {
+        static partial void AddScalarDistances(InputSet inputs, Action<string, string, int, Func<int, double>> add)
+        {
+            var (s1, s2) = Sides<F.Sphere, F.Sphere>(inputs, "3D sphere–sphere");
+            Distance(add, "3D sphere–sphere", s1.Length, (i, r) => { for (int j = 0; j < r.Length; j++) r[j] = FC.Distance(s1[i], s2[j]); });
+            var (p, pb) = Sides<Vector3, F.Aabb3>(inputs, "3D point–AABB");
+            Distance(add, "3D point–AABB", p.Length, (i, r) => { for (int j = 0; j < r.Length; j++) r[j] = FC.Distance(p[i], pb[j]); });
+            var (sa, ab) = Sides<F.Sphere, F.Aabb3>(inputs, "3D sphere–AABB");
+            Distance(add, "3D sphere–AABB", sa.Length, (i, r) => { for (int j = 0; j < r.Length; j++) r[j] = FC.Distance(sa[i], ab[j]); });
+            var (so, ob) = Sides<F.Sphere, F.Obb3>(inputs, "3D sphere–OBB");
+            Distance(add, "3D sphere–OBB", so.Length, (i, r) => { for (int j = 0; j < r.Length; j++) r[j] = FC.Distance(so[i], ob[j]); });
+            var (g1, g2) = Sides<F.Segment3, F.Segment3>(inputs, "3D segment–segment");
+            Distance(add, "3D segment–segment", g1.Length, (i, r) => { for (int j = 0; j < r.Length; j++) r[j] = FC.Distance(g1[i], g2[j]); });
+        }
+
+        private static void Distance(Action<string, string, int, Func<int, double>> add, string query, int n, Action<int, float[]> query2) =>
+            ScalarOneToMany(add, "float " + query + " distance", "scalar one-to-many Distance", n, query2, v => v);
+    }
 }
