@@ -68,6 +68,16 @@ static int Samples()
     return 0;
 }
 
+// The overload for the two shapes' types, found by reflection: `dynamic` does not bind an overload whose shapes are
+// in parameters (which most are), and a shape is an in parameter or not as its pair's kernel takes it.
+static object Query(Type owner, string name, object a, object b)
+{
+    static Type Plain(Type t) => t.IsByRef ? t.GetElementType()! : t;
+    var method = owner.GetMethods(System.Reflection.BindingFlags.Public | System.Reflection.BindingFlags.Static)
+        .FirstOrDefault(m => m.Name == name && m.GetParameters() is { Length: 2 } ps && Plain(ps[0].ParameterType) == a.GetType() && Plain(ps[1].ParameterType) == b.GetType());
+    return (method ?? throw new MissingMethodException(owner.Name, name)).Invoke(null, new[] { a, b })!;
+}
+
 static void Print(string name, DistanceResult3 r, bool overlaps) =>
     Console.WriteLine($"{name}: distance {r.Distance,10:0.######}  A {r.PointA}  B {r.PointB}  overlaps: {overlaps}");
 
@@ -94,10 +104,10 @@ static int Picker(string[] args)
     dynamic r;
     try
     {
-        overlaps = ProximityQuery.Overlaps((dynamic)first, (dynamic)second);
-        r = ClosestDistance.Between((dynamic)first, (dynamic)second);
+        overlaps = (bool)Query(typeof(ProximityQuery), "Overlaps", first, second);
+        r = Query(typeof(ClosestDistance), "Between", first, second);
     }
-    catch (Microsoft.CSharp.RuntimeBinder.RuntimeBinderException)
+    catch (MissingMethodException)
     {
         // Every pair of same-dimension shapes has a query; this guards a shape added to the specs before its pairs.
         Console.Error.WriteLine($"error: the library has no query for {first.GetType().Name} and {second.GetType().Name}");
