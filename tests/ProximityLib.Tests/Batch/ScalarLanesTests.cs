@@ -195,13 +195,8 @@ namespace ProximityTests.Batch
             };
             var points = new PointSet(cases.Select(c => c.Point).ToArray());
             var boxes = new AabbSet(cases.Select(c => c.Box).ToArray());
-            var expected = cases.Select(c => c.Inside).ToArray();
-            foreach (bool vectorized in new[] { true, false })
-            {
-                Assert.That(Run<bool>(vectorized, cases.Length, x => BatchQuery.Overlaps(points, boxes, x)), Is.EqualTo(expected), $"paired, vectorized {vectorized}");
-                for (int i = 0; i < cases.Length; i++)
-                    Assert.That(Run<bool>(vectorized, 1, x => BatchQuery.Overlaps(cases[i].Point, new AabbSet(new[] { cases[i].Box }), x))[0], Is.EqualTo(expected[i]), $"one-to-many, case {i}, vectorized {vectorized}");
-            }
+            VerdictsInEveryLane(cases.Select(c => c.Inside).ToArray(), x => BatchQuery.Overlaps(points, boxes, x),
+                (i, x) => BatchQuery.Overlaps(cases[i].Point, new AabbSet(new[] { cases[i].Box }), x));
         }
 
         [Test]
@@ -227,12 +222,21 @@ namespace ProximityTests.Batch
                     }
             var a = new AabbSet(cases.Select(c => c.A).ToArray());
             var b = new AabbSet(cases.Select(c => c.B).ToArray());
-            var expected = cases.Select(c => c.Touch).ToArray();
+            VerdictsInEveryLane(cases.Select(c => c.Touch).ToArray(), x => BatchQuery.Overlaps(a, b, x),
+                (i, x) => BatchQuery.Overlaps(cases[i].A, new AabbSet(new[] { cases[i].B }), x));
+        }
+
+        /// <summary>
+        /// The expected verdicts from the paired query and from case i's first shape against a one-shape set, on the
+        /// vector lanes and on the scalar lanes.
+        /// </summary>
+        private static void VerdictsInEveryLane(bool[] expected, Action<bool[]> paired, Action<int, bool[]> oneToMany)
+        {
             foreach (bool vectorized in new[] { true, false })
             {
-                Assert.That(Run<bool>(vectorized, cases.Count, x => BatchQuery.Overlaps(a, b, x)), Is.EqualTo(expected), $"paired, vectorized {vectorized}");
-                for (int i = 0; i < cases.Count; i++)
-                    Assert.That(Run<bool>(vectorized, 1, x => BatchQuery.Overlaps(cases[i].A, new AabbSet(new[] { cases[i].B }), x))[0], Is.EqualTo(expected[i]), $"one-to-many, case {i}, vectorized {vectorized}");
+                Assert.That(Run(vectorized, expected.Length, paired), Is.EqualTo(expected), $"paired, vectorized {vectorized}");
+                for (int i = 0; i < expected.Length; i++)
+                    Assert.That(Run<bool>(vectorized, 1, x => oneToMany(i, x))[0], Is.EqualTo(expected[i]), $"one-to-many, case {i}, vectorized {vectorized}");
             }
         }
 

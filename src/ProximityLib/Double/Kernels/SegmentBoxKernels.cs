@@ -170,8 +170,8 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// <see cref="InFrame"/>'s distance alone: the same verdict, apart minimum and push depth, without locating the
-        /// witnesses (the box point, and for meeting shapes a second minimisation on the pushed segment: about a third
-        /// of an overlapping query's time).
+        /// witnesses (the box point, and for meeting shapes a second minimisation on the pushed segment: about half of
+        /// an overlapping query's time, 50 → 23 ns for 3D segment–AABB without PGO).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static double InFrameDistance(Vector3D la, Vector3D ld, Vector3D lo, Vector3D hi, bool planar, ref bool inRange)
