@@ -237,7 +237,10 @@ namespace ProximityApiGen
             foreach (var k in between.Where(k => k.Guarded))
             {
                 w.Line("[MethodImpl(MethodImplOptions.NoInlining)]");
-                w.Line($"private static {k.Result} Slow(in {k.A.Double} a, in {k.B.Double} b) => Wide.Between(a, b, static (x, y) => Core(x, y{Range(k, "double")}, out _));");
+                // A ranged Core hears the range in the rescaled frame, so the witnesses it picks stay finite mapped back.
+                w.Line(k.Ranged
+                    ? $"private static {k.Result} Slow(in {k.A.Double} a, in {k.B.Double} b) => Wide.Between(a, b, double.MaxValue, static (x, y, range) => Core(x, y, range, out _));"
+                    : $"private static {k.Result} Slow(in {k.A.Double} a, in {k.B.Double} b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));");
             }
             w.Close();
             w.Line();

@@ -40,9 +40,9 @@ namespace ProximityLib.Double
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(in HalfSpace a, in HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, double.MaxValue, out _));
+        private static DistanceResult3 Slow(in HalfSpace a, in HalfSpace b) => Wide.Between(a, b, double.MaxValue, static (x, y, range) => Core(x, y, range, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(in HalfPlane a, in HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, double.MaxValue, out _));
+        private static DistanceResult2 Slow(in HalfPlane a, in HalfPlane b) => Wide.Between(a, b, double.MaxValue, static (x, y, range) => Core(x, y, range, out _));
     }
 
     public static partial class ProximityQuery

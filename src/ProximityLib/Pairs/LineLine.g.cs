@@ -8,19 +8,19 @@ namespace ProximityLib.Double
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a line and a line (3D): never negative; parallel lines: the canonically first line's origin and its projection on the other (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the lines' t. Algorithm: gap and closest parameters from the common normal dA × dB formed with exact products (Dekker), so nearly parallel lines keep u·|ΔOrigin| accuracy (Eberly, distance between lines).</summary>
+        /// <summary>Closest distance between a line and a line (3D): never negative; parallel lines: the canonically first line's origin and its projection on the other (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the lines' t. Should a closest point or its parameter lie beyond the range of the API's precision (float's for the float API), or a parameter beyond 2^1022·M (M the origins' largest coordinate magnitude, to its power of two: directions within about 2^-1022 of parallel), no pair of points the result can hold realises the distance: Distance stands, and the witnesses are chosen as for parallel lines. Algorithm: gap and closest parameters from the common normal dA × dB formed with exact products (Dekker), so nearly parallel lines keep u·|ΔOrigin| accuracy (Eberly, distance between lines).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(in Line3 a, in Line3 b)
         {
-            var r = Core(a, b, out bool inRange);
+            var r = Core(a, b, double.MaxValue, out bool inRange);
             if (!inRange) r = Slow(a, b);
             return r;
         }
-        /// <summary>Closest distance between a line and a line (2D): 0 at the crossing point unless parallel; parallel lines: the canonically first line's origin and its projection on the other (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the lines' t. Algorithm: crossing parameters from the cross product formed with exact products (Dekker), so nearly parallel lines keep their accuracy (Eberly, distance between lines).</summary>
+        /// <summary>Closest distance between a line and a line (2D): 0 at the crossing point unless parallel; parallel lines: the canonically first line's origin and its projection on the other (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the lines' t. Should a closest point or its parameter lie beyond the range of the API's precision (float's for the float API), or a parameter beyond 2^1022·M (M the origins' largest coordinate magnitude, to its power of two: directions within about 2^-1022 of parallel), no pair of points the result can hold realises the distance: Distance stands, and the witnesses are chosen as for parallel lines. Algorithm: crossing parameters from the cross product formed with exact products (Dekker), so nearly parallel lines keep their accuracy (Eberly, distance between lines).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(in Line2 a, in Line2 b)
         {
-            var r = Core(a, b, out bool inRange);
+            var r = Core(a, b, double.MaxValue, out bool inRange);
             if (!inRange) r = Slow(a, b);
             return r;
         }
@@ -32,9 +32,9 @@ namespace ProximityLib.Double
         public static double Distance(in Line2 a, in Line2 b) => Between(a, b).Distance;
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(in Line3 a, in Line3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Line3 a, in Line3 b) => Wide.Between(a, b, double.MaxValue, static (x, y, range) => Core(x, y, range, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(in Line2 a, in Line2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Line2 a, in Line2 b) => Wide.Between(a, b, double.MaxValue, static (x, y, range) => Core(x, y, range, out _));
     }
 
     public static partial class ProximityQuery
@@ -65,12 +65,12 @@ namespace ProximityLib
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a line and a line (3D), computed in double: never negative; parallel lines: the canonically first line's origin and its projection on the other (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the lines' t.</summary>
+        /// <summary>Closest distance between a line and a line (3D), computed in double: never negative; parallel lines: the canonically first line's origin and its projection on the other (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the lines' t. Should a closest point or its parameter lie beyond the range of the API's precision (float's for the float API), or a parameter beyond 2^1022·M (M the origins' largest coordinate magnitude, to its power of two: directions within about 2^-1022 of parallel), no pair of points the result can hold realises the distance: Distance stands, and the witnesses are chosen as for parallel lines.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(in Line3 a, in Line3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
-        /// <summary>Closest distance between a line and a line (2D), computed in double: 0 at the crossing point unless parallel; parallel lines: the canonically first line's origin and its projection on the other (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the lines' t.</summary>
+        public static DistanceResult3 Between(in Line3 a, in Line3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, float.MaxValue, out _));
+        /// <summary>Closest distance between a line and a line (2D), computed in double: 0 at the crossing point unless parallel; parallel lines: the canonically first line's origin and its projection on the other (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the lines' t. Should a closest point or its parameter lie beyond the range of the API's precision (float's for the float API), or a parameter beyond 2^1022·M (M the origins' largest coordinate magnitude, to its power of two: directions within about 2^-1022 of parallel), no pair of points the result can hold realises the distance: Distance stands, and the witnesses are chosen as for parallel lines.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(in Line2 a, in Line2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Line2 a, in Line2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, float.MaxValue, out _));
         /// <summary>Signed closest distance between a line and a line (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Line3, in Line3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(in Line3 a, in Line3 b) => Between(a, b).Distance;

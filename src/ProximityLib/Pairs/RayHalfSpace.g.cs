@@ -8,22 +8,22 @@ namespace ProximityLib.Double
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a ray and a half-space (3D): a ray heading inward (Normal·Direction &lt; 0, by its exact sign) penetrates without bound: Distance = −∞ (DistanceSquared 0) with both witnesses at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction, when it starts outside, or at the origin (t = 0) when it starts inside or on the boundary (also should the crossing lie beyond the double range). Otherwise (outward or parallel) the origin is lowest: the height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary. Algorithm: two dot products from the stored boundary point and one division.</summary>
+        /// <summary>Closest distance between a ray and a half-space (3D): a ray heading inward (Normal·Direction &lt; 0, by its exact sign) penetrates without bound: Distance = −∞ (DistanceSquared 0) with both witnesses at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction, when it starts outside, or at the origin (t = 0) when it starts inside or on the boundary (also should the crossing or t lie beyond the range of the API's precision, float's for the float API, or t beyond 2^1022·M, M the largest coordinate magnitude of Origin and Point to its power of two). Otherwise (outward or parallel) the origin is lowest: the height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary. Algorithm: two dot products from the stored boundary point and one division.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(in Ray3 a, in HalfSpace b)
         {
-            var r = Core(a, b, out bool inRange);
+            var r = Core(a, b, double.MaxValue, out bool inRange);
             if (!inRange) r = Slow(a, b);
             return r;
         }
         /// <summary>Closest distance between a half-space and a ray (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(in HalfSpace a, in Ray3 b) => Between(b, a).Swapped();
-        /// <summary>Closest distance between a ray and a half-plane (2D): a ray heading inward (Normal·Direction &lt; 0, by its exact sign) penetrates without bound: Distance = −∞ (DistanceSquared 0) with both witnesses at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction, when it starts outside, or at the origin (t = 0) when it starts inside or on the boundary (also should the crossing lie beyond the double range). Otherwise (outward or parallel) the origin is lowest: the height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary. Algorithm: two dot products from the stored boundary point and one division.</summary>
+        /// <summary>Closest distance between a ray and a half-plane (2D): a ray heading inward (Normal·Direction &lt; 0, by its exact sign) penetrates without bound: Distance = −∞ (DistanceSquared 0) with both witnesses at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction, when it starts outside, or at the origin (t = 0) when it starts inside or on the boundary (also should the crossing or t lie beyond the range of the API's precision, float's for the float API, or t beyond 2^1022·M, M the largest coordinate magnitude of Origin and Point to its power of two). Otherwise (outward or parallel) the origin is lowest: the height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary. Algorithm: two dot products from the stored boundary point and one division.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(in Ray2 a, in HalfPlane b)
         {
-            var r = Core(a, b, out bool inRange);
+            var r = Core(a, b, double.MaxValue, out bool inRange);
             if (!inRange) r = Slow(a, b);
             return r;
         }
@@ -52,9 +52,9 @@ namespace ProximityLib.Double
         public static double Distance(in HalfPlane a, in Ray2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(in Ray3 a, in HalfSpace b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Ray3 a, in HalfSpace b) => Wide.Between(a, b, double.MaxValue, static (x, y, range) => Core(x, y, range, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(in Ray2 a, in HalfPlane b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Ray2 a, in HalfPlane b) => Wide.Between(a, b, double.MaxValue, static (x, y, range) => Core(x, y, range, out _));
     }
 
     public static partial class ProximityQuery
@@ -91,15 +91,15 @@ namespace ProximityLib
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a ray and a half-space (3D), computed in double: a ray heading inward (Normal·Direction &lt; 0, by its exact sign) penetrates without bound: Distance = −∞ (DistanceSquared 0) with both witnesses at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction, when it starts outside, or at the origin (t = 0) when it starts inside or on the boundary (also should the crossing lie beyond the double range). Otherwise (outward or parallel) the origin is lowest: the height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary.</summary>
+        /// <summary>Closest distance between a ray and a half-space (3D), computed in double: a ray heading inward (Normal·Direction &lt; 0, by its exact sign) penetrates without bound: Distance = −∞ (DistanceSquared 0) with both witnesses at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction, when it starts outside, or at the origin (t = 0) when it starts inside or on the boundary (also should the crossing or t lie beyond the range of the API's precision, float's for the float API, or t beyond 2^1022·M, M the largest coordinate magnitude of Origin and Point to its power of two). Otherwise (outward or parallel) the origin is lowest: the height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(in Ray3 a, in HalfSpace b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(in Ray3 a, in HalfSpace b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, float.MaxValue, out _));
         /// <summary>Closest distance between a half-space and a ray (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(in HalfSpace a, in Ray3 b) => Between(b, a).Swapped();
-        /// <summary>Closest distance between a ray and a half-plane (2D), computed in double: a ray heading inward (Normal·Direction &lt; 0, by its exact sign) penetrates without bound: Distance = −∞ (DistanceSquared 0) with both witnesses at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction, when it starts outside, or at the origin (t = 0) when it starts inside or on the boundary (also should the crossing lie beyond the double range). Otherwise (outward or parallel) the origin is lowest: the height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary.</summary>
+        /// <summary>Closest distance between a ray and a half-plane (2D), computed in double: a ray heading inward (Normal·Direction &lt; 0, by its exact sign) penetrates without bound: Distance = −∞ (DistanceSquared 0) with both witnesses at the crossing point Origin + t·Direction, t = −Normal·(Origin − Point) / Normal·Direction, when it starts outside, or at the origin (t = 0) when it starts inside or on the boundary (also should the crossing or t lie beyond the range of the API's precision, float's for the float API, or t beyond 2^1022·M, M the largest coordinate magnitude of Origin and Point to its power of two). Otherwise (outward or parallel) the origin is lowest: the height Normal·(Origin − Point), negative inside, witnessed at the origin (ParameterA 0) and its foot on the boundary.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(in Ray2 a, in HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Ray2 a, in HalfPlane b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, float.MaxValue, out _));
         /// <summary>Closest distance between a half-plane and a ray (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(in HalfPlane a, in Ray2 b) => Between(b, a).Swapped();

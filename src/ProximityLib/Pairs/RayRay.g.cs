@@ -8,19 +8,19 @@ namespace ProximityLib.Double
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a ray and a ray (3D): never negative; where the minimum is not unique (parallel rays) the canonically first ray's origin and its nearest point on the other when that is no farther, else the other's origin and its nearest point on the first (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the rays' t ≥ 0. Algorithm: the lines' closest parameters from the common normal dA × dB formed with exact products (Dekker); when either is negative, the better of each origin against the other ray (convex objective: the minimum lies on the boundary of the parameter quadrant; Eberly, distance between linear components).</summary>
+        /// <summary>Closest distance between a ray and a ray (3D): never negative; where the minimum is not unique (parallel rays) the canonically first ray's origin and its nearest point on the other when that is no farther, else the other's origin and its nearest point on the first (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the rays' t ≥ 0. Should a closest point or its parameter lie beyond the range of the API's precision (float's for the float API), or a parameter beyond 2^1022·M (M the origins' largest coordinate magnitude, to its power of two: directions within about 2^-1022 of parallel), no pair of points the result can hold realises the distance: Distance stands, and the witnesses are chosen as for parallel rays. Algorithm: the lines' closest parameters from the common normal dA × dB formed with exact products (Dekker); when either is negative, the better of each origin against the other ray (convex objective: the minimum lies on the boundary of the parameter quadrant; Eberly, distance between linear components).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(in Ray3 a, in Ray3 b)
         {
-            var r = Core(a, b, out bool inRange);
+            var r = Core(a, b, double.MaxValue, out bool inRange);
             if (!inRange) r = Slow(a, b);
             return r;
         }
-        /// <summary>Closest distance between a ray and a ray (2D): never negative (0 where they cross); where the minimum is not unique (parallel rays) the canonically first ray's origin and its nearest point on the other when that is no farther, else the other's origin and its nearest point on the first (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the rays' t ≥ 0. Algorithm: the lines' crossing parameters from the cross product formed with exact products (Dekker); when either is negative, the better of each origin against the other ray (Eberly, distance between linear components).</summary>
+        /// <summary>Closest distance between a ray and a ray (2D): never negative (0 where they cross); where the minimum is not unique (parallel rays) the canonically first ray's origin and its nearest point on the other when that is no farther, else the other's origin and its nearest point on the first (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the rays' t ≥ 0. Should a closest point or its parameter lie beyond the range of the API's precision (float's for the float API), or a parameter beyond 2^1022·M (M the origins' largest coordinate magnitude, to its power of two: directions within about 2^-1022 of parallel), no pair of points the result can hold realises the distance: Distance stands, and the witnesses are chosen as for parallel rays. Algorithm: the lines' crossing parameters from the cross product formed with exact products (Dekker); when either is negative, the better of each origin against the other ray (Eberly, distance between linear components).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(in Ray2 a, in Ray2 b)
         {
-            var r = Core(a, b, out bool inRange);
+            var r = Core(a, b, double.MaxValue, out bool inRange);
             if (!inRange) r = Slow(a, b);
             return r;
         }
@@ -32,9 +32,9 @@ namespace ProximityLib.Double
         public static double Distance(in Ray2 a, in Ray2 b) => Between(a, b).Distance;
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(in Ray3 a, in Ray3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Ray3 a, in Ray3 b) => Wide.Between(a, b, double.MaxValue, static (x, y, range) => Core(x, y, range, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(in Ray2 a, in Ray2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Ray2 a, in Ray2 b) => Wide.Between(a, b, double.MaxValue, static (x, y, range) => Core(x, y, range, out _));
     }
 
     public static partial class ProximityQuery
@@ -65,12 +65,12 @@ namespace ProximityLib
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a ray and a ray (3D), computed in double: never negative; where the minimum is not unique (parallel rays) the canonically first ray's origin and its nearest point on the other when that is no farther, else the other's origin and its nearest point on the first (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the rays' t ≥ 0.</summary>
+        /// <summary>Closest distance between a ray and a ray (3D), computed in double: never negative; where the minimum is not unique (parallel rays) the canonically first ray's origin and its nearest point on the other when that is no farther, else the other's origin and its nearest point on the first (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the rays' t ≥ 0. Should a closest point or its parameter lie beyond the range of the API's precision (float's for the float API), or a parameter beyond 2^1022·M (M the origins' largest coordinate magnitude, to its power of two: directions within about 2^-1022 of parallel), no pair of points the result can hold realises the distance: Distance stands, and the witnesses are chosen as for parallel rays.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(in Ray3 a, in Ray3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
-        /// <summary>Closest distance between a ray and a ray (2D), computed in double: never negative (0 where they cross); where the minimum is not unique (parallel rays) the canonically first ray's origin and its nearest point on the other when that is no farther, else the other's origin and its nearest point on the first (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the rays' t ≥ 0.</summary>
+        public static DistanceResult3 Between(in Ray3 a, in Ray3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, float.MaxValue, out _));
+        /// <summary>Closest distance between a ray and a ray (2D), computed in double: never negative (0 where they cross); where the minimum is not unique (parallel rays) the canonically first ray's origin and its nearest point on the other when that is no farther, else the other's origin and its nearest point on the first (src/ProximityLib/Double/Order.cs), the same in either argument order; ParameterA/B are the rays' t ≥ 0. Should a closest point or its parameter lie beyond the range of the API's precision (float's for the float API), or a parameter beyond 2^1022·M (M the origins' largest coordinate magnitude, to its power of two: directions within about 2^-1022 of parallel), no pair of points the result can hold realises the distance: Distance stands, and the witnesses are chosen as for parallel rays.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(in Ray2 a, in Ray2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Ray2 a, in Ray2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, float.MaxValue, out _));
         /// <summary>Signed closest distance between a ray and a ray (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Ray3, in Ray3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(in Ray3 a, in Ray3 b) => Between(a, b).Distance;

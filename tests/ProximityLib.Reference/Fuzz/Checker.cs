@@ -235,10 +235,15 @@ namespace ProximityReference.Fuzz
             var tolC = _unit * _bound;
             string tolText = $"tolerance 8·{_bound}·U + 16·u·M = {tolW.ToDouble():G4} (U = u·S + η = {_unit.ToDouble():G4}, M = {m.ToDouble():G4})";
 
-            // (b) |PB − PA| = |Distance|.
+            // (b) |PB − PA| = |Distance|, unless no representable pair realises it (two lines or rays whose closest
+            // points lie beyond the range): then the witnesses are those of parallel shapes, one of them an origin
+            // (where the fallback must come, real witnesses would not be finite, which (a) rejects).
             var w2 = (pb - pa).LengthSquared;
             var absD = Dy.Abs(d0);
-            if (!DyMath.AtMostRoot(absD - tolW, w2) || !DyMath.AtLeastRoot(absD + tolW, w2))
+            // Near the range's end either answer may come (the library decides on rounded points): the fallback
+            // is recognised by its origin, and real witnesses get the check.
+            if (FarClosestPoints(first, second, 0) && (r.TA == 0 || r.TB == 0)) { }
+            else if (!DyMath.AtMostRoot(absD - tolW, w2) || !DyMath.AtLeastRoot(absD + tolW, w2))
                 Fail("b witness distance", $"{call}: |PointB − PointA| = {DyMath.Sqrt(w2):R} but |Distance| = {N(Math.Abs(r.D))}; {tolText}", code);
 
             // (c) witnesses on or in their shapes (a segment's at its reported parameter).
@@ -360,10 +365,80 @@ namespace ProximityReference.Fuzz
             var pb = DyVec.From(r.PB);
             var m = Dy.Max(Dy.Max(_ca.Magnitude(), _cb.Magnitude()), Dy.Max(MaxAbs(pa), MaxAbs(pb)));
             var tolW = _unit * (8 * _bound) + _u * m * 16;
-            if (!MidpointFallback(pa, first, second))
+            if (!MidpointFallback(pa, first, second) && !OriginFallback(r, first, second))
                 CheckWitnesses(r, first, second, call, pa, pb, tolW, $"tolerance 8·{_bound}·U + 16·u·M = {tolW.ToDouble():G4}", code);
             return true;
         }
+
+        /// <summary>
+        /// The contract's fallback for a line or ray crossing a half-space's boundary beyond the precision's range
+        /// (docs/pairs.md): both witnesses are the origin (parameter 0), and the exact crossing point lies beyond float's
+        /// or double's largest value (to 2^-20 relative, as for <see cref="MidpointFallback"/>).
+        /// </summary>
+        private bool OriginFallback(Res r, Core first, Core second)
+        {
+            bool linearFirst = Kinds.IsLinear(first.Kind);
+            var line = linearFirst ? first : second;
+            if (!Kinds.IsLinear(line.Kind) || (linearFirst ? second : first).Kind != Kind.HalfSpace) return false;
+            if ((linearFirst ? r.TA : r.TB) != 0 || !Spec.Bits(r.PA, line.P) || !Spec.Bits(r.PB, line.P)) return false;
+            return CrossingBeyond(line, linearFirst ? second : first, 0);
+        }
+
+        /// <summary>
+        /// Whether a line or ray's crossing of a half-space's boundary lies beyond the precision's range (to 2^-20
+        /// relative), with the inputs scaled by 2^k: the crossing o + u·t, t = −n·(o − p)/(n·u), compared times n·u.
+        /// False when the line does not cross (parallel, or a ray heading out).
+        /// </summary>
+        private bool CrossingBeyond(Core line, Core half, int k)
+        {
+            DyVec o = DyVec.From(line.P).Times2(k), u = DyVec.From(line.Q), p = DyVec.From(half.P).Times2(k), n = DyVec.From(half.Q);
+            var nu = DyVec.Dot(n, u);
+            if (nu.IsZero || (line.Kind == Kind.Ray && nu.Sign > 0)) return false;
+            var h = DyVec.Dot(n, o - p);
+            var x = o * nu - u * h;
+            var limit = Dy.Abs(nu) * (Dy)(_float ? float.MaxValue : double.MaxValue) * (Dy)(1 - Math.Pow(2, -20));
+            return Dy.Abs(x.X) > limit || Dy.Abs(x.Y) > limit || Dy.Abs(x.Z) > limit || Dy.Abs(h) > limit
+                   || Dy.Abs(h) >= Dy.Abs(nu) * Dy.Pow2(1021 + PowerOfTwo(line.P, half.P, k));
+        }
+
+        /// <summary>
+        /// The contract's fallback for two lines or rays (docs/pairs.md): whether the lines' closest pair is the answer
+        /// (within each ray) and one of its points lies beyond float's or double's largest value (to 2^-20 relative: the
+        /// library decides on its rounded points) or, in double, lies more than 2^1021 along its line from the origin
+        /// (the kernel forms no point past 2^1022). The inputs scaled by 2^k first (exact). With n = dA × dB and D = |n|²,
+        /// the closest parameters are S/D = (w × dB)·n/D and T/D = (w × dA)·n/D, so the points are compared times D.
+        /// </summary>
+        private bool FarClosestPoints(Core first, Core second, int k)
+        {
+            if (!Kinds.IsLinear(first.Kind) || !Kinds.IsLinear(second.Kind)) return false;
+            DyVec oa = DyVec.From(first.P).Times2(k), da = DyVec.From(first.Q), ob = DyVec.From(second.P).Times2(k), db = DyVec.From(second.Q);
+            var n = Cross(da, db);
+            var d = n.LengthSquared;
+            if (d.IsZero) return false;
+            var w = ob - oa;
+            Dy s = DyVec.Dot(Cross(w, db), n), t = DyVec.Dot(Cross(w, da), n);
+            if ((first.Kind == Kind.Ray && s.Sign < 0) || (second.Kind == Kind.Ray && t.Sign < 0)) return false;
+            var limit = d * (Dy)(_float ? float.MaxValue : double.MaxValue) * (Dy)(1 - Math.Pow(2, -20));
+            var pa = oa * d + da * s;
+            var pb = ob * d + db * t;
+            for (int i = 0; i < 3; i++)
+                if (Dy.Abs(pa[i]) > limit || Dy.Abs(pb[i]) > limit) return true;
+            var reach = d * Dy.Pow2(1021 + PowerOfTwo(first.P, second.P, k));
+            return Dy.Abs(s) > limit || Dy.Abs(t) > limit || Dy.Abs(s) >= reach || Dy.Abs(t) >= reach;
+        }
+
+        /// <summary>
+        /// floor(log2 M) for M the largest coordinate magnitude of two points scaled by 2^k: the library forms no
+        /// unbounded shape's point past 2^1022·2^floor(log2 M) along it (what its rescaled path can hold). The checks
+        /// allow the fallback from 2^1021 on (the parameter's rounding); −1074 for M = 0.
+        /// </summary>
+        private static int PowerOfTwo(Vector3D p, Vector3D q, int k)
+        {
+            double m = Math.Max(Math.Max(Math.Abs(p.X), Math.Abs(p.Y)), Math.Max(Math.Max(Math.Abs(p.Z), Math.Abs(q.X)), Math.Max(Math.Abs(q.Y), Math.Abs(q.Z))));
+            return m == 0 ? -1074 : Math.ILogB(m) + k;
+        }
+
+        private static DyVec Cross(DyVec a, DyVec b) => new DyVec(a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X);
 
         /// <summary>
         /// The contract's fallback for two half-spaces whose boundaries meet beyond the precision's range (docs/pairs.md):
@@ -577,7 +652,10 @@ namespace ProximityReference.Fuzz
             // switches between the two, so the witnesses are compared only where neither side is, or must be, the fallback.
             double max = _float ? float.MaxValue : double.MaxValue;
             bool Fits(Vector3D p) => Math.Abs(Math.ScaleB(p.X, k)) <= max && Math.Abs(Math.ScaleB(p.Y, k)) <= max && Math.Abs(Math.ScaleB(p.Z, k)) <= max;
-            if (!(double.IsNegativeInfinity(ab.D) && _ca.Kind == Kind.HalfSpace && _cb.Kind == Kind.HalfSpace
+            // Likewise two lines' or rays' witnesses, and a line's crossing of a half-space's boundary, where the exact
+            // points lie beyond the range on either side of the scaling (FarClosestPoints, CrossingBeyond).
+            bool far = FarClosestPoints(_ca, _cb, 0) || FarClosestPoints(_ca, _cb, k) || LinearCrossingBeyond(0) || LinearCrossingBeyond(k);
+            if (!far && !(double.IsNegativeInfinity(ab.D) && _ca.Kind == Kind.HalfSpace && _cb.Kind == Kind.HalfSpace
                   && (MidpointFallback(DyVec.From(ab.PA), _ca, _cb) || !Fits(ab.PA))))
             {
                 Same("PointA.X", ab.PA.X, r2.PA.X, k); Same("PointA.Y", ab.PA.Y, r2.PA.Y, k); Same("PointA.Z", ab.PA.Z, r2.PA.Z, k);
@@ -585,13 +663,18 @@ namespace ProximityReference.Fuzz
             }
             // A line's or ray's parameter is a length along its unit direction (scales); the others are fractions (do not).
             bool linA = Kinds.IsLinear(_c.A.Kind), linB = Kinds.IsLinear(_c.B.Kind);
-            if (linA) Same("ParameterA", ab.TA, r2.TA, k);
-            if (linB) Same("ParameterB", ab.TB, r2.TB, k);
+            if (linA && !far) Same("ParameterA", ab.TA, r2.TA, k);
+            if (linB && !far) Same("ParameterB", ab.TB, r2.TB, k);
             if ((!linA && !Spec.Bits(ab.TA, r2.TA)) || (!linB && !Spec.Bits(ab.TB, r2.TB)))
                 diffs.Add($"parameters {N(r2.TA)}, {N(r2.TB)} instead of {N(ab.TA)}, {N(ab.TB)}");
             if (o2 != oab) diffs.Add($"Overlaps {o2} instead of {oab}");
             if (diffs.Count > 0) Fail("i 2^k scaling", $"scaling every input by 2^{k} is not exact: {string.Join("; ", diffs)}", code);
         }
+
+        /// <summary><see cref="CrossingBeyond"/> for the case's shapes when they are a line or ray and a half-space.</summary>
+        private bool LinearCrossingBeyond(int k) =>
+            Kinds.IsLinear(_ca.Kind) && _cb.Kind == Kind.HalfSpace ? CrossingBeyond(_ca, _cb, k)
+            : Kinds.IsLinear(_cb.Kind) && _ca.Kind == Kind.HalfSpace && CrossingBeyond(_cb, _ca, k);
 
         /// <summary>Zero or a normal number of the precision (finite): such values scale by 2^k exactly when the result is one too.</summary>
         private bool Normal(double x) => x == 0 || (double.IsFinite(x) && Math.Abs(x) >= (_float ? Math.ScaleB(1, -126) : Math.ScaleB(1, -1022))

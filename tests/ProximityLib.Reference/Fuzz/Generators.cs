@@ -53,6 +53,7 @@ namespace ProximityReference.Fuzz
             ("slivers", Slivers, (a, b) => a == Kind.Triangle || b == Kind.Triangle),
             ("far-along", FarAlong, (a, b) => Kinds.IsLinear(a) || Kinds.IsLinear(b)),
             ("edge-parallel", EdgeParallel, (a, b) => (a == Kind.Triangle && Axial(b)) || (b == Kind.Triangle && Axial(a))),
+            ("far-crossing", FarCrossing, (a, b) => Kinds.IsLinear(a) ? Kinds.IsLinear(b) || b == Kind.HalfSpace : Kinds.IsLinear(b) && a == Kind.HalfSpace),
         };
 
         private static bool Axial(Kind k) => k == Kind.Segment || k == Kind.Line || k == Kind.Ray || k == Kind.Capsule;
@@ -1337,6 +1338,50 @@ namespace ProximityReference.Fuzz
         /// A line's or ray's origin moved far along it (2^10…2^60 of the size; 2^30 in float), the rest as "random":
         /// parameters and witnesses far from the origin, where cancellation in Origin + t·Direction shows.
         /// </summary>
+        /// <summary>
+        /// Two lines or rays, or a line or ray and a half-space, so nearly parallel that they meet (or come closest) far
+        /// away: near the end of the precision's range (half the cases, within 2^±8 of it, so on either side), or at up
+        /// to 2^1100 of their own size (angles down to the subnormal range). Directions are sometimes axis-aligned before
+        /// the turn, so a tiny angle survives rounding (float too). In 3D a line pair is offset out of its plane by up to
+        /// its size, so the distance is not 0.
+        /// </summary>
+        private static (Spec, Spec) FarCrossing(Rng r, Kind ka, Kind kb, int dim, Precision p)
+        {
+            double s = r.Pow2(p.MinExp / 2, p.MaxExp - 4);
+            double range = p.Float ? float.MaxValue : double.MaxValue;
+            double far = r.Chance(0.5) ? range * r.Pow2(-8, 8) : s * r.Pow2(10, p.Float ? 260 : 1100);
+            Vector3D d = r.Chance(0.5) ? Dir(r, dim) : AxisDir(r, dim);
+            var side = Perp(r, d, dim);
+            var o = U3(r, 1.5, dim) * s;
+            double h = s * r.Pow2(-4, 1);
+            double theta = Math.Min(1, h / far);
+            bool halfA = ka == Kind.HalfSpace, halfB = kb == Kind.HalfSpace;
+            Spec Linear(Kind k, Vector3D origin, Vector3D dir) =>
+                k == Kind.Line ? Spec.Line(dim, origin, dir) : Spec.Ray(dim, origin, r.Chance(0.8) ? dir : -dir);
+            if (halfA || halfB)
+            {
+                // The boundary through o with normal `side`; the line starts h above it and descends at θ: it meets the
+                // boundary about h/θ ahead.
+                var line = Linear(halfA ? kb : ka, o + side * h, d - side * theta);
+                var half = Spec.HalfSpace(dim, o + d * (s * r.Range(-2, 2)), r.Chance(0.8) ? side : -side);
+                return Finish(halfA ? half : line, halfA ? line : half, p);
+            }
+            // A through o along d; B through o + h·side (plus an offset out of the plane in 3D), turned back by θ: they
+            // cross (or pass closest) about h/θ ahead of o, on A's side of B's origin.
+            var lift = dim == 3 && r.Chance(0.7) ? Vector3D.Cross(d, side) * (s * r.Range(-1, 1)) : default;
+            var a = Linear(ka, o, d);
+            var b = Linear(kb, o + side * h + d * (s * r.Range(-2, 2)) + lift, d - side * theta);
+            return Finish(a, b, p);
+        }
+
+        /// <summary>A signed coordinate axis (a direction whose tiny turns stay exact).</summary>
+        private static Vector3D AxisDir(Rng r, int dim)
+        {
+            int i = r.Int(dim);
+            double sign = r.Sign();
+            return new Vector3D(i == 0 ? sign : 0, i == 1 ? sign : 0, i == 2 ? sign : 0);
+        }
+
         private static (Spec, Spec) FarAlong(Rng r, Kind ka, Kind kb, int dim, Precision p)
         {
             double s = r.Pow2(-10, 10);

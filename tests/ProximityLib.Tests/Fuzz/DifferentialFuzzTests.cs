@@ -86,7 +86,13 @@ namespace ProximityTests.Fuzz
         /// that a tried shortcut failed (taking, for a segment pushed out of a box along a face normal, its leading end as
         /// the touching point: in nearly touching, collinear and nearly parallel cases the rounded push picked a face the
         /// segment does not touch, and the witnesses ended up to 1e5 apart): 2031:46763 and 2031:3000000065803 (2D
-        /// segment–OBB), 2031:16088, 2031:524348 and 2031:3000000072388 (3D segment–OBB).
+        /// segment–OBB), 2031:16088, 2031:524348 and 2031:3000000072388 (3D segment–OBB). From the far-crossing generator
+        /// when it was added (lines, rays and half-spaces meeting near or past the range's end): 2033:1000000136291 (2D
+        /// float line–ray meeting past float's range: infinite parameters), 2033:1000000126570 and 2033:1000000019095 (3D
+        /// line–line and 2D line–half-plane turned subnormally, scaled by 2^k onto the rescaled path, which could not form
+        /// the far point the fast path gave), 2034:1000000022931 (2D line–ray meeting 7e306 away, near where the fallback
+        /// may begin). And 2034:1000000177551 (3D float capsule–AABB, a zero-radius capsule apart by the separating-axis
+        /// verdict with a zero squared gap: Between answered −0, Distance +0).
         /// </summary>
         [TestCase(11, 280751)]
         [TestCase(11, 1579269)]
@@ -128,6 +134,11 @@ namespace ProximityTests.Fuzz
         [TestCase(2031, 16088)]
         [TestCase(2031, 524348)]
         [TestCase(2031, 3000000072388)]
+        [TestCase(2033, 1000000136291)]
+        [TestCase(2033, 1000000126570)]
+        [TestCase(2033, 1000000019095)]
+        [TestCase(2034, 1000000022931)]
+        [TestCase(2034, 1000000177551)]
         public void CasesTheLongModeFoundKeepEveryInvariant(long seed, long index)
         {
             var failures = Checker.Run(FuzzCase.Create(seed, index), exact: true);

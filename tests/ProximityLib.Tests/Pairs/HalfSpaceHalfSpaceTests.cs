@@ -12,6 +12,20 @@ namespace ProximityTests.Pairs
 {
     public class HalfSpaceHalfSpaceTests
     {
+        /// <summary>
+        /// Boundaries 1e300 apart, turned 1e-10, meet near x = −1e310, past double's range, and neither stored point lies
+        /// in the other half-plane: the common point falls back to the midpoint of the stored points (0, 5e299). The
+        /// rescaled slow path once found its meeting point within range in its own frame and mapped it back to −∞.
+        /// </summary>
+        [Test]
+        public void MeetingBeyondTheRangeOnTheSlowPathAnswersTheMidpoint()
+        {
+            var r = ClosestDistance.Between(HalfPlane.FromPointNormal(V(0, 0), V(0, 1)), HalfPlane.FromPointNormal(V(0, 1e300), V(1e-10, -1)));
+            Assert.That(r.Distance, Is.EqualTo(double.NegativeInfinity));
+            Assert.That(r.PointA, Is.EqualTo(V(0, 5e299)));
+            Assert.That(r.PointB, Is.EqualTo(r.PointA));
+        }
+
         [Test]
         public void OppositeNormalsGiveTheGap()
         {

@@ -14,6 +14,34 @@ namespace ProximityTests.Pairs
     {
         private static readonly HalfSpace Floor = HalfSpace.FromPointNormal(V(0, 0, 1), V(0, 0, 1));
 
+        /// <summary>
+        /// A crossing past the precision's range answers the origin (t = 0): in float a line descending 1e-38 per unit
+        /// from 1e10 crosses at 1e48; in double one from 1e300 descending 1e-10 per unit crosses at 1e310 (the rescaled
+        /// slow path, which once mapped its crossing back to infinity). Rays likewise.
+        /// </summary>
+        [Test]
+        public void CrossingBeyondTheRangeAnswersTheOrigin()
+        {
+            var floor = Flt.HalfSpace.FromPointNormal(new Num.Vector3(0, 0, 0), new Num.Vector3(0, 1, 0));
+            var origin = new Num.Vector3(0, 1e10f, 0);
+            foreach (var r in new[] { Flt.ClosestDistance.Between(new Flt.Line3(origin, new Num.Vector3(1, -1e-38f, 0)), floor),
+                                      Flt.ClosestDistance.Between(new Flt.Ray3(origin, new Num.Vector3(1, -1e-38f, 0)), floor) })
+            {
+                Assert.That(r.Distance, Is.EqualTo(float.NegativeInfinity));
+                Assert.That((r.PointA, r.PointB, r.ParameterA), Is.EqualTo((origin, origin, 0f)));
+            }
+            var o = V(0, 1e300, 0);
+            var ground = HalfSpace.FromPointNormal(V(0, 0, 0), V(0, 1, 0));
+            foreach (var r in new[] { ClosestDistance.Between(new Line3(o, V(1, -1e-10, 0)), ground), ClosestDistance.Between(new Ray3(o, V(1, -1e-10, 0)), ground) })
+            {
+                Assert.That(r.Distance, Is.EqualTo(double.NegativeInfinity));
+                Assert.That((r.PointA, r.PointB, r.ParameterA), Is.EqualTo((o, o, 0.0)));
+            }
+            // Within the range the crossing stands: 1e300 / 1e-10·… lands at 1e306 from 1e296.
+            var near = ClosestDistance.Between(new Line3(V(0, 1e296, 0), V(1, -1e-10, 0)), ground);
+            Assert.That(near.PointA.X, Is.EqualTo(1e306).Within(1e-12).Percent);
+        }
+
         [Test]
         public void CrossingIsUnboundedAtTheCrossingPoint()
         {

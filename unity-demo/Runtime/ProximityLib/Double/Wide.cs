@@ -151,6 +151,15 @@ namespace ProximityLib.Double
 
         private Vector3D Back(Vector3D p) => _translate ? _lo + p * _up1 * _up2 : p * _up1 * _up2;
 
+        /// <summary>
+        /// A coordinate range of the original frame (the largest magnitude a witness may have) in the rescaled one: a
+        /// point within it there maps back within <paramref name="range"/>. Exactly range·2^-e for a pure scaling; with
+        /// the translation, what the translation origin leaves of it (never negative; a translated configuration lies
+        /// far inside the range, so this only bounds unbounded shapes' points).
+        /// </summary>
+        public double ApplyRange(double range) =>
+            (_translate ? Math.Max(0, range - Range.MaxAbs(_lo)) * (1 - 1.0 / (1L << 52)) : range) * _down1 * _down2;
+
         /// <summary>The answer in the original frame; a line's or ray's parameter (<paramref name="lengthA"/>, <paramref name="lengthB"/>) is a length and scales back too.</summary>
         public DistanceResult3 Back(in DistanceResult3 r, bool lengthA, bool lengthB) =>
             new DistanceResult3(r.Distance * _up1 * _up2, r.DistanceSquared * _up1 * _up1 * _up2 * _up2,
@@ -209,6 +218,28 @@ namespace ProximityLib.Double
         {
             var s = Measure(a, b);
             return s.Back(core(a.Rescaled(s), b.Rescaled(s)), LengthParameter<TA>(), LengthParameter<TB>());
+        }
+
+        /// <summary>
+        /// <see cref="Between{TA, TB}(TA, TB, Func{TA, TB, DistanceResult3})"/> for a kernel told the range its witnesses
+        /// must stay in (<paramref name="range"/> in the original frame, handed to it in the rescaled one), so the
+        /// answer it maps back stays finite.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static DistanceResult3 Between<TA, TB>(TA a, TB b, double range, Func<TA, TB, double, DistanceResult3> core)
+            where TA : struct, IScalable<TA> where TB : struct, IScalable<TB>
+        {
+            var s = Measure(a, b);
+            return s.Back(core(a.Rescaled(s), b.Rescaled(s), s.ApplyRange(range)), LengthParameter<TA>(), LengthParameter<TB>());
+        }
+
+        /// <summary>As for 3D.</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static DistanceResult2 Between<TA, TB>(TA a, TB b, double range, Func<TA, TB, double, DistanceResult2> core)
+            where TA : struct, IScalable<TA> where TB : struct, IScalable<TB>
+        {
+            var s = Measure(a, b);
+            return s.Back(core(a.Rescaled(s), b.Rescaled(s), s.ApplyRange(range)), LengthParameter<TA>(), LengthParameter<TB>());
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]

@@ -10,22 +10,22 @@ namespace ProximityLib.Double
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a line and a ray (3D): never negative; a ray parallel to the line or pointing away from the lines' closest pair: its origin and the origin's projection on the line; ParameterA is the line's t, ParameterB the ray's t ≥ 0. Algorithm: the lines' closest parameters from the common normal dA × dB formed with exact products (Dekker), else the ray's origin against the line (Eberly, distance between linear components).</summary>
+        /// <summary>Closest distance between a line and a ray (3D): never negative; a ray parallel to the line or pointing away from the lines' closest pair: its origin and the origin's projection on the line; ParameterA is the line's t, ParameterB the ray's t ≥ 0. Should a closest point or its parameter lie beyond the range of the API's precision (float's for the float API), or a parameter beyond 2^1022·M (M the origins' largest coordinate magnitude, to its power of two: directions within about 2^-1022 of parallel), no pair of points the result can hold realises the distance: Distance stands, and the witnesses are chosen as for parallel shapes (the ray's origin and its projection). Algorithm: the lines' closest parameters from the common normal dA × dB formed with exact products (Dekker), else the ray's origin against the line (Eberly, distance between linear components).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(in Line3 a, in Ray3 b)
         {
-            var r = Core(a, b, out bool inRange);
+            var r = Core(a, b, double.MaxValue, out bool inRange);
             if (!inRange) r = Slow(a, b);
             return r;
         }
         /// <summary>Closest distance between a ray and a line (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(in Ray3 a, in Line3 b) => Between(b, a).Swapped();
-        /// <summary>Closest distance between a line and a ray (2D): never negative (0 where the ray crosses the line); a ray parallel to the line or pointing away from it: its origin and the origin's projection on the line; ParameterA is the line's t, ParameterB the ray's t ≥ 0. Algorithm: the lines' crossing parameters from the cross product formed with exact products (Dekker), else the ray's origin against the line (Eberly, distance between linear components).</summary>
+        /// <summary>Closest distance between a line and a ray (2D): never negative (0 where the ray crosses the line); a ray parallel to the line or pointing away from it: its origin and the origin's projection on the line; ParameterA is the line's t, ParameterB the ray's t ≥ 0. Should a closest point or its parameter lie beyond the range of the API's precision (float's for the float API), or a parameter beyond 2^1022·M (M the origins' largest coordinate magnitude, to its power of two: directions within about 2^-1022 of parallel), no pair of points the result can hold realises the distance: Distance stands, and the witnesses are chosen as for parallel shapes (the ray's origin and its projection). Algorithm: the lines' crossing parameters from the cross product formed with exact products (Dekker), else the ray's origin against the line (Eberly, distance between linear components).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(in Line2 a, in Ray2 b)
         {
-            var r = Core(a, b, out bool inRange);
+            var r = Core(a, b, double.MaxValue, out bool inRange);
             if (!inRange) r = Slow(a, b);
             return r;
         }
@@ -46,9 +46,9 @@ namespace ProximityLib.Double
         public static double Distance(in Ray2 a, in Line2 b) => Distance(b, a);
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult3 Slow(in Line3 a, in Ray3 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult3 Slow(in Line3 a, in Ray3 b) => Wide.Between(a, b, double.MaxValue, static (x, y, range) => Core(x, y, range, out _));
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static DistanceResult2 Slow(in Line2 a, in Ray2 b) => Wide.Between(a, b, static (x, y) => Core(x, y, out _));
+        private static DistanceResult2 Slow(in Line2 a, in Ray2 b) => Wide.Between(a, b, double.MaxValue, static (x, y, range) => Core(x, y, range, out _));
     }
 
     public static partial class ProximityQuery
@@ -85,15 +85,15 @@ namespace ProximityLib
 {
     public static partial class ClosestDistance
     {
-        /// <summary>Closest distance between a line and a ray (3D), computed in double: never negative; a ray parallel to the line or pointing away from the lines' closest pair: its origin and the origin's projection on the line; ParameterA is the line's t, ParameterB the ray's t ≥ 0.</summary>
+        /// <summary>Closest distance between a line and a ray (3D), computed in double: never negative; a ray parallel to the line or pointing away from the lines' closest pair: its origin and the origin's projection on the line; ParameterA is the line's t, ParameterB the ray's t ≥ 0. Should a closest point or its parameter lie beyond the range of the API's precision (float's for the float API), or a parameter beyond 2^1022·M (M the origins' largest coordinate magnitude, to its power of two: directions within about 2^-1022 of parallel), no pair of points the result can hold realises the distance: Distance stands, and the witnesses are chosen as for parallel shapes (the ray's origin and its projection).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 Between(Line3 a, Ray3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult3 Between(Line3 a, Ray3 b) => new DistanceResult3(Dbl.ClosestDistance.Core(a.Inner, b.Inner, float.MaxValue, out _));
         /// <summary>Closest distance between a ray and a line (3D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult3 Between(Ray3 a, Line3 b) => Between(b, a).Swapped();
-        /// <summary>Closest distance between a line and a ray (2D), computed in double: never negative (0 where the ray crosses the line); a ray parallel to the line or pointing away from it: its origin and the origin's projection on the line; ParameterA is the line's t, ParameterB the ray's t ≥ 0.</summary>
+        /// <summary>Closest distance between a line and a ray (2D), computed in double: never negative (0 where the ray crosses the line); a ray parallel to the line or pointing away from it: its origin and the origin's projection on the line; ParameterA is the line's t, ParameterB the ray's t ≥ 0. Should a closest point or its parameter lie beyond the range of the API's precision (float's for the float API), or a parameter beyond 2^1022·M (M the origins' largest coordinate magnitude, to its power of two: directions within about 2^-1022 of parallel), no pair of points the result can hold realises the distance: Distance stands, and the witnesses are chosen as for parallel shapes (the ray's origin and its projection).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult2 Between(in Line2 a, in Ray2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, out _));
+        public static DistanceResult2 Between(in Line2 a, in Ray2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, float.MaxValue, out _));
         /// <summary>Closest distance between a ray and a line (2D): the swapped call, with PointA/PointB and parameters swapped.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static DistanceResult2 Between(in Ray2 a, in Line2 b) => Between(b, a).Swapped();

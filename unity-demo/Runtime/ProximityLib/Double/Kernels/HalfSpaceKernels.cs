@@ -110,11 +110,12 @@ namespace ProximityLib.Double
         /// A line (origin o, unit direction u; a ray when <paramref name="ray"/>) against the half-space. Not parallel to
         /// the boundary (a line), or heading inward (a ray), by the exact sign of n·u (<see cref="AccurateDot"/>): the
         /// penetration is unbounded, −∞, and both witnesses are the origin when it lies inside, else the crossing point
-        /// o + t·u, t = −n·(o − p)/n·u; should the crossing lie beyond the double range, the origin. Otherwise the minimum is at every point of a line (parallel) or at a ray's origin,
+        /// o + t·u, t = −n·(o − p)/n·u; should the crossing or t lie beyond <paramref name="range"/> (the float API passes
+        /// float.MaxValue), or t beyond 2^1022·M (M the largest coordinate magnitude of o and p, to its power of two), the origin. Otherwise the minimum is at every point of a line (parallel) or at a ray's origin,
         /// which is returned with its foot on the boundary.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 LineHalfSpace(Vector3D o, Vector3D u, bool ray, Vector3D n, Vector3D p, out bool inRange)
+        public static DistanceResult3 LineHalfSpace(Vector3D o, Vector3D u, bool ray, Vector3D n, Vector3D p, double range, out bool inRange)
         {
             var d = o - p;
             double s = Vector3D.Dot(n, d), k = AccurateDot(n, u, Vector3D.Dot(n, u));
@@ -126,7 +127,10 @@ namespace ProximityLib.Double
                 {
                     t = -s / k + 0.0; // + 0.0: a crossing at the origin is t = +0 whatever the signs
                     var x = o + u * t;
-                    if (double.IsInfinity(x.X) || double.IsInfinity(x.Y) || double.IsInfinity(x.Z)) t = 0;
+                    // Past 2^1022·M (M the inputs' magnitude to its power of two) as for two lines (Unbounded): the
+                    // rescaled slow path could not form the point, so neither path takes it.
+                    double perM = Num.InversePowerOfTwo(Num.Max(Range.MaxAbs(o), Range.MaxAbs(p)));
+                    if (!Within(x, range) || !(Math.Abs(t) <= range) || !(Math.Abs(t) * perM <= Reach)) t = 0;
                 }
                 var common = t == 0 ? o : o + u * t;
                 return new DistanceResult3(double.NegativeInfinity, 0, common, common, t, 0);

@@ -173,14 +173,15 @@ namespace ProximityLib.Double
             new PointContact(dist, v2, SegmentPoint(b0, b1, t), NearSegmentNormal(p, b0, b1, t), t);
 
         /// <summary>
-        /// Two lines or rays (o, unit d): well apart in direction, the lines' closest parameters from cross products of
-        /// an accurately formed normal n = dA × dB (<see cref="AccurateCross"/>: the plain cross product cancels to noise
+        /// Two lines or rays (o, unit d). Not exactly parallel: the lines' closest parameters from cross products of an
+        /// accurately formed normal n = dA × dB (<see cref="AccurateCross"/>: the plain cross product cancels to noise
         /// for nearly parallel directions, and the gap w·n/|n| and the parameters ((w × dB)·n, (w × dA)·n)/|n|² then
-        /// carry only u·|w|); when both lie on their shapes, the gap between the lines is the answer, and the witnesses are
-        /// refined by projection. Otherwise the
-        /// minimum lies where a ray starts: each ray's origin against the other shape, the smaller residual, ties to A.
-        /// Parallel lines: A's origin against B. Each boundary candidate is measured as the residual of the two points it
-        /// returns. Directions so close that the parameters would pass 1e300 count as parallel.
+        /// carry only u·|w|); when both lie on their shapes, the gap between the lines is the answer however far away
+        /// they meet, and the witnesses are refined by projection. Otherwise the minimum lies where a ray starts: each
+        /// ray's origin against the other shape (<see cref="FromOrigins"/>). Parallel lines: A's origin against B.
+        /// Parameters beyond 2^1022·M, M the origins' largest coordinate magnitude to its power of two (lines within about
+        /// 2^-1022 of parallel), come back NaN: their points cannot be formed in the rescaled frame, and
+        /// <see cref="UnboundedPair"/> then picks other witnesses.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)] // each query has one call site; called, its three outs cost 2x without PGO
         public static double Unbounded(Vector3D oA, Vector3D dA, bool rayA, Vector3D oB, Vector3D dB, bool rayB, out double s, out double t, out bool inRange)
@@ -189,33 +190,76 @@ namespace ProximityLib.Double
             bool sized = Range.Length2(w, w.LengthSquared);
             var n = AccurateCross(dA, dB);
             double m = Range.MaxAbs(n);
-            if (m >= 1e-270)
+            if (m > 0)
             {
                 // n scaled by a power of two so its largest component lies in [1, 2): |n|² stays normal however close
-                // the directions are, and the scaling is exact.
-                double k = Num.InversePowerOfTwo(m); // m ≤ 2 here, so its clamp never applies
+                // the directions are, and the scaling is exact. Below 2^-900 n is formed again from directions lifted
+                // by 2^500 (lift = 2^1000 restores the parameters' scale): a subnormal n would have lost its direction.
+                double k = Num.InversePowerOfTwo(m), lift = 1;
+                if (m < TinyNormal) n = LiftedNormal(dA, dB, out k, out lift);
                 var nk = n * k;
                 double nn = nk.LengthSquared;
-                double si = Vector3D.Dot(Vector3D.Cross(w, dB), nk) / nn * k;
-                double ti = Vector3D.Dot(Vector3D.Cross(w, dA), nk) / nn * k;
-                if (Math.Abs(si) <= 1e300 && Math.Abs(ti) <= 1e300 && (!rayA || si >= 0) && (!rayB || ti >= 0))
+                double si = Vector3D.Dot(Vector3D.Cross(w, dB), nk) / nn * k * lift;
+                double ti = Vector3D.Dot(Vector3D.Cross(w, dA), nk) / nn * k * lift;
+                if ((!rayA || si >= 0) && (!rayB || ti >= 0))
                 {
-                    // The parameters are known to u·|w|/θ along nearly parallel lines, each on its own: a projection
-                    // of A's point onto B and back makes the pair consistent (each projection is well conditioned), so
-                    // the returned points realise the gap to within their own rounding.
-                    t = Vector3D.Dot(dB, dA * si - w);
-                    if (rayB && t < 0) t = 0;
-                    s = Vector3D.Dot(dA, w + dB * t);
-                    if (rayA && s < 0) s = 0;
                     double gap = Vector3D.Dot(w, nk) / Math.Sqrt(nn), g2 = gap * gap;
                     inRange = sized && (gap == 0 || Range.In(g2));
+                    // Parameters are measured against the origins' magnitude M: past 2^1022·M (to M's power of two) the
+                    // rescaled slow path, which brings M to 1, could not form the points, so neither path does (2^k-scaled
+                    // inputs get 2^k-scaled answers on both sides of the paths' boundary).
+                    double perM = Num.InversePowerOfTwo(Num.Max(Range.MaxAbs(oA), Range.MaxAbs(oB)));
+                    if (Math.Abs(si) * perM <= Reach && Math.Abs(ti) * perM <= Reach)
+                    {
+                        // The parameters are known to u·|w|/θ along nearly parallel lines, each on its own: a projection
+                        // of A's point onto B and back makes the pair consistent (each projection is well conditioned), so
+                        // the returned points realise the gap to within their own rounding.
+                        t = Vector3D.Dot(dB, dA * si - w);
+                        if (rayB && t < 0) t = 0;
+                        s = Vector3D.Dot(dA, w + dB * t);
+                        if (rayA && s < 0) s = 0;
+                    }
+                    else { s = double.NaN; t = double.NaN; }
                     return g2;
                 }
             }
+            double best = FromOrigins(w, dA, rayA, dB, rayB, out s, out t, out var v);
+            inRange = sized && Range.Length2(v, best);
+            return best;
+        }
 
+        /// <summary>2^-900: a cross product of unit directions this small is formed again, lifted (<see cref="LiftedNormal"/>).</summary>
+        private const double TinyNormal = 1.1830521861667747e-271;
+
+        /// <summary>2^1022: parameters up to this (times the origins' magnitude) keep every product and sum of the witness refinement finite.</summary>
+        private const double Reach = 4.49423283715579e307;
+
+        /// <summary>
+        /// dA × dB formed from the directions times 2^500 each (products of components below 2^-500 are exact there),
+        /// scaled into [1, 2) by <paramref name="k"/>; <paramref name="lift"/> = 2^1000 is the factor the lifting took
+        /// from the parameters. Rare (directions within 2^-900 of parallel), so out of line.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static Vector3D LiftedNormal(Vector3D dA, Vector3D dB, out double k, out double lift)
+        {
+            const double up = 3.273390607896142e150; // 2^500
+            var n = AccurateCross(dA * up, dB * up);
+            k = Num.InversePowerOfTwo(Range.MaxAbs(n));
+            lift = up * up;
+            return n;
+        }
+
+        /// <summary>
+        /// The minimum over the rays' origins: each ray's origin against the other shape (a line's origin only when both
+        /// are lines), the smaller residual, ties to A; <paramref name="v"/> the residual PointB − PointA or its negation.
+        /// The answer when the lines' closest points fall outside a ray, and for parallel shapes.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double FromOrigins(Vector3D w, Vector3D dA, bool rayA, Vector3D dB, bool rayB, out double s, out double t, out Vector3D v)
+        {
             double best = double.PositiveInfinity;
             s = 0; t = 0;
-            var v = default(Vector3D);
+            v = default;
             if (rayA || !rayB)
             {
                 // A's origin against B.
@@ -233,7 +277,6 @@ namespace ProximityLib.Double
                 double r2 = r.LengthSquared;
                 if (r2 < best) { best = r2; v = r; s = sc; t = 0; }
             }
-            inRange = sized && Range.Length2(v, best);
             return best;
         }
 
@@ -675,22 +718,39 @@ namespace ProximityLib.Double
         /// order, it was inlined twice, and the doubled body ran 1.5–3× slower.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 OrderedUnboundedPair(Vector3D oA, Vector3D dA, Vector3D oB, Vector3D dB, bool rays, out bool inRange)
+        public static DistanceResult3 OrderedUnboundedPair(Vector3D oA, Vector3D dA, Vector3D oB, Vector3D dB, bool rays, double range, out bool inRange)
         {
             bool swap = Order.Swap(oA, dA, oB, dB);
-            var r = UnboundedPair(swap ? oB : oA, swap ? dB : dA, rays, swap ? oA : oB, swap ? dA : dB, rays, out inRange);
+            var r = UnboundedPair(swap ? oB : oA, swap ? dB : dA, rays, swap ? oA : oB, swap ? dA : dB, rays, range, out inRange);
             return swap ? r.Swapped() : r;
         }
 
-        /// <summary><see cref="Unbounded"/> as a result: the witnesses Origin + t·Direction of each shape.</summary>
+        /// <summary>
+        /// <see cref="Unbounded"/> as a result: the witnesses Origin + t·Direction of each shape. Should either point or
+        /// parameter lie beyond <paramref name="range"/> (the float API passes float.MaxValue), or a parameter beyond
+        /// 2^1022·M (<see cref="Unbounded"/>), no pair of points the result can hold realises the distance: the distance
+        /// stands, and the witnesses are those of the origins (<see cref="FromOrigins"/>, as for parallel shapes).
+        /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static DistanceResult3 UnboundedPair(Vector3D oA, Vector3D dA, bool rayA, Vector3D oB, Vector3D dB, bool rayB, out bool inRange)
+        public static DistanceResult3 UnboundedPair(Vector3D oA, Vector3D dA, bool rayA, Vector3D oB, Vector3D dB, bool rayB, double range, out bool inRange)
         {
             double r2 = Unbounded(oA, dA, rayA, oB, dB, rayB, out double s, out double t, out inRange);
             s += 0; t += 0; // −0 + 0 = 0
             var pa = oA + dA * s;
             // Meeting shapes answer one common point (the contract for two non-solids).
-            return new DistanceResult3(Math.Sqrt(r2), r2, pa, r2 == 0 ? pa : oB + dB * t, s, t);
+            var pb = r2 == 0 ? pa : oB + dB * t;
+            if (!Within(pa, range) || !Within(pb, range) || !(Math.Abs(s) <= range) || !(Math.Abs(t) <= range))
+                return FarWitnesses(oA, dA, rayA, oB, dB, rayB, r2);
+            return new DistanceResult3(Math.Sqrt(r2), r2, pa, pb, s, t);
+        }
+
+        /// <summary>The distance of <see cref="UnboundedPair"/> with the origins' witnesses: the lines' closest points lie beyond the range. Rare, so out of line.</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static DistanceResult3 FarWitnesses(Vector3D oA, Vector3D dA, bool rayA, Vector3D oB, Vector3D dB, bool rayB, double r2)
+        {
+            FromOrigins(oB - oA, dA, rayA, dB, rayB, out double s, out double t, out _);
+            s += 0; t += 0;
+            return new DistanceResult3(Math.Sqrt(r2), r2, oA + dA * s, oB + dB * t, s, t);
         }
 
         /// <summary>
