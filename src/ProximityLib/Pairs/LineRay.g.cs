@@ -32,13 +32,21 @@ namespace ProximityLib.Double
         public static DistanceResult2 Between(in Ray2 a, in Line2 b) => Between(b, a).Swapped();
         /// <summary>Signed closest distance between a line and a ray (3D) without the witness points: the Distance of <see cref="Between(in Line3, in Ray3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(in Line3 a, in Ray3 b) => Between(a, b).Distance;
+        public static double Distance(in Line3 a, in Ray3 b)
+        {
+            var r = DistanceCore(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b).Distance;
+        }
         /// <summary>Signed closest distance between a ray and a line (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double Distance(in Ray3 a, in Line3 b) => Distance(b, a);
         /// <summary>Signed closest distance between a line and a ray (2D) without the witness points: the Distance of <see cref="Between(in Line2, in Ray2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(in Line2 a, in Ray2 b) => Between(a, b).Distance;
+        public static double Distance(in Line2 a, in Ray2 b)
+        {
+            var r = DistanceCore(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b).Distance;
+        }
         /// <summary>Signed closest distance between a ray and a line (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double Distance(in Ray2 a, in Line2 b) => Distance(b, a);
@@ -97,13 +105,13 @@ namespace ProximityLib
         public static DistanceResult2 Between(in Ray2 a, in Line2 b) => Between(b, a).Swapped();
         /// <summary>Signed closest distance between a line and a ray (3D), computed in double, without the witness points: the Distance of <see cref="Between(Line3, Ray3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(Line3 a, Ray3 b) => Between(a, b).Distance;
+        public static float Distance(Line3 a, Ray3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a ray and a line (3D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(Ray3 a, Line3 b) => Distance(b, a);
         /// <summary>Signed closest distance between a line and a ray (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Line2, in Ray2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(in Line2 a, in Ray2 b) => Between(a, b).Distance;
+        public static float Distance(in Line2 a, in Ray2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a ray and a line (2D): Distance(b, a).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static float Distance(in Ray2 a, in Line2 b) => Distance(b, a);

@@ -26,10 +26,18 @@ namespace ProximityLib.Double
         }
         /// <summary>Signed closest distance between a ray and a ray (3D) without the witness points: the Distance of <see cref="Between(in Ray3, in Ray3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(in Ray3 a, in Ray3 b) => Between(a, b).Distance;
+        public static double Distance(in Ray3 a, in Ray3 b)
+        {
+            var r = DistanceCore(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b).Distance;
+        }
         /// <summary>Signed closest distance between a ray and a ray (2D) without the witness points: the Distance of <see cref="Between(in Ray2, in Ray2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(in Ray2 a, in Ray2 b) => Between(a, b).Distance;
+        public static double Distance(in Ray2 a, in Ray2 b)
+        {
+            var r = DistanceCore(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b).Distance;
+        }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static DistanceResult3 Slow(in Ray3 a, in Ray3 b) => Wide.Between(a, b, double.MaxValue, static (x, y, range) => Core(x, y, range, out _));
@@ -73,10 +81,10 @@ namespace ProximityLib
         public static DistanceResult2 Between(in Ray2 a, in Ray2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, float.MaxValue, out _));
         /// <summary>Signed closest distance between a ray and a ray (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Ray3, in Ray3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(in Ray3 a, in Ray3 b) => Between(a, b).Distance;
+        public static float Distance(in Ray3 a, in Ray3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a ray and a ray (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Ray2, in Ray2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(in Ray2 a, in Ray2 b) => Between(a, b).Distance;
+        public static float Distance(in Ray2 a, in Ray2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
     }
 
     public static partial class ProximityQuery

@@ -188,63 +188,96 @@ namespace ProximityLib.Double
             bool sized = Range.Length2(w, w.LengthSquared);
             var n = AccurateCross(dA, dB);
             double m = Range.MaxAbs(n);
-            if (m > 0)
+            double nn, si, ti;
+            Vector3D nk;
+            if (m >= TinyNormal)
             {
                 // n scaled by a power of two so its largest component lies in [1, 2): |n|² stays normal however close
-                // the directions are, and the scaling is exact. Below 2^-900 n is formed again from directions lifted
-                // by 2^500 (lift = 2^1000 restores the parameters' scale): a subnormal n would have lost its direction.
-                double k = Num.InversePowerOfTwo(m), lift = 1;
-                if (m < TinyNormal) n = LiftedNormal(dA, dB, out k, out lift);
-                var nk = n * k;
-                double nn = nk.LengthSquared;
-                double si = Vector3D.Dot(Vector3D.Cross(w, dB), nk) / nn * k * lift;
-                double ti = Vector3D.Dot(Vector3D.Cross(w, dA), nk) / nn * k * lift;
-                if ((!rayA || si >= 0) && (!rayB || ti >= 0))
+                // the directions are, and the scaling is exact.
+                double k = Num.InversePowerOfTwo(m);
+                nk = n * k;
+                nn = nk.LengthSquared;
+                si = Vector3D.Dot(Vector3D.Cross(w, dB), nk) / nn * k;
+                ti = Vector3D.Dot(Vector3D.Cross(w, dA), nk) / nn * k;
+            }
+            else if (m > 0)
+            {
+                // A value, not out parameters: an address taken here would keep the hot path's locals in memory.
+                var c = LiftedCrossing(w, dA, dB);
+                nk = c.Nk; nn = c.Nn; si = c.Si; ti = c.Ti;
+            }
+            else { nk = default; nn = si = ti = 0; }
+            if (m > 0 && (!rayA || si >= 0) && (!rayB || ti >= 0))
+            {
+                double gap = Vector3D.Dot(w, nk) / Math.Sqrt(nn), g2 = gap * gap;
+                inRange = sized && (gap == 0 || Range.In(g2));
+                // Parameters are measured against the origins' magnitude M: past 2^1022·M (to M's power of two) the
+                // rescaled slow path, which brings M to 1, could not form the points, so neither path does (2^k-scaled
+                // inputs get 2^k-scaled answers on both sides of the paths' boundary). Up to 2^541 no M matters: the fast
+                // path's answer is kept only for |w| ≥ 2^-480.
+                if ((Math.Abs(si) <= NoReachBelow && Math.Abs(ti) <= NoReachBelow) || WithinReach(si, ti, oA, oB))
                 {
-                    double gap = Vector3D.Dot(w, nk) / Math.Sqrt(nn), g2 = gap * gap;
-                    inRange = sized && (gap == 0 || Range.In(g2));
-                    // Parameters are measured against the origins' magnitude M: past 2^1022·M (to M's power of two) the
-                    // rescaled slow path, which brings M to 1, could not form the points, so neither path does (2^k-scaled
-                    // inputs get 2^k-scaled answers on both sides of the paths' boundary).
-                    double perM = Num.InversePowerOfTwo(Num.Max(Range.MaxAbs(oA), Range.MaxAbs(oB)));
-                    if (Math.Abs(si) * perM <= Reach && Math.Abs(ti) * perM <= Reach)
-                    {
-                        // The parameters are known to u·|w|/θ along nearly parallel lines, each on its own: a projection
-                        // of A's point onto B and back makes the pair consistent (each projection is well conditioned), so
-                        // the returned points realise the gap to within their own rounding.
-                        t = Vector3D.Dot(dB, dA * si - w);
-                        if (rayB && t < 0) t = 0;
-                        s = Vector3D.Dot(dA, w + dB * t);
-                        if (rayA && s < 0) s = 0;
-                    }
-                    else { s = double.NaN; t = double.NaN; }
-                    return g2;
+                    // The parameters are known to u·|w|/θ along nearly parallel lines, each on its own: a projection
+                    // of A's point onto B and back makes the pair consistent (each projection is well conditioned), so
+                    // the returned points realise the gap to within their own rounding.
+                    t = Vector3D.Dot(dB, dA * si - w);
+                    if (rayB && t < 0) t = 0;
+                    s = Vector3D.Dot(dA, w + dB * t);
+                    if (rayA && s < 0) s = 0;
                 }
+                else { s = double.NaN; t = double.NaN; }
+                return g2;
             }
             double best = FromOrigins(w, dA, rayA, dB, rayB, out s, out t, out var v);
             inRange = sized && Range.Length2(v, best);
             return best;
         }
 
-        /// <summary>2^-900: a cross product of unit directions this small is formed again, lifted (<see cref="LiftedNormal"/>).</summary>
+        /// <summary>2^-900: a cross product of unit directions this small is formed again, lifted (<see cref="LiftedCrossing"/>).</summary>
         private const double TinyNormal = 1.1830521861667747e-271;
+
+        /// <summary>2^541: parameters up to this are within reach of any origins the fast path answers for (|w| ≥ 2^-480).</summary>
+        private const double NoReachBelow = 7.198262071269114e+162;
 
         /// <summary>2^1022: parameters up to this (times the origins' magnitude) keep every product and sum of the witness refinement finite.</summary>
         private const double Reach = 4.49423283715579e307;
 
         /// <summary>
-        /// dA × dB formed from the directions times 2^500 each (products of components below 2^-500 are exact there),
-        /// scaled into [1, 2) by <paramref name="k"/>; <paramref name="lift"/> = 2^1000 is the factor the lifting took
-        /// from the parameters. Rare (directions within 2^-900 of parallel), so out of line.
+        /// The lines' crossing for directions within 2^-900 of parallel: dA × dB formed from the directions times 2^500
+        /// each (a subnormal product would have lost its direction; there they are exact), scaled into [1, 2); the
+        /// parameters take back the lifting's 2^1000 after the division, so a zero stays 0.
+        /// Rare, so out of line.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static Vector3D LiftedNormal(Vector3D dA, Vector3D dB, out double k, out double lift)
+        private static LiftedLines LiftedCrossing(Vector3D w, Vector3D dA, Vector3D dB)
         {
             const double up = 3.273390607896142e150; // 2^500
             var n = AccurateCross(dA * up, dB * up);
-            k = Num.InversePowerOfTwo(Range.MaxAbs(n));
-            lift = up * up;
-            return n;
+            double k = Num.InversePowerOfTwo(Range.MaxAbs(n));
+            var nk = n * k;
+            double nn = nk.LengthSquared;
+            return new LiftedLines
+            {
+                Nk = nk,
+                Nn = nn,
+                Si = Vector3D.Dot(Vector3D.Cross(w, dB), nk) / nn * k * (up * up),
+                Ti = Vector3D.Dot(Vector3D.Cross(w, dA), nk) / nn * k * (up * up),
+            };
+        }
+
+        /// <summary><see cref="LiftedCrossing"/>'s answer: the scaled normal, its squared length and the two parameters.</summary>
+        private struct LiftedLines
+        {
+            public Vector3D Nk;
+            public double Nn, Si, Ti;
+        }
+
+        /// <summary>Whether both parameters lie within 2^1022·M, M the origins' largest coordinate magnitude to its power of two (<see cref="Unbounded"/>).</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static bool WithinReach(double si, double ti, Vector3D oA, Vector3D oB)
+        {
+            double perM = Num.InversePowerOfTwo(Num.Max(Range.MaxAbs(oA), Range.MaxAbs(oB)));
+            return Math.Abs(si) * perM <= Reach && Math.Abs(ti) * perM <= Reach;
         }
 
         /// <summary>
@@ -723,6 +756,14 @@ namespace ProximityLib.Double
             return swap ? r.Swapped() : r;
         }
 
+        /// <summary>The Distance of <see cref="OrderedUnboundedPair"/> alone, bit for bit: the same kernel on the same canonical order.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double OrderedUnboundedDistance(Vector3D oA, Vector3D dA, Vector3D oB, Vector3D dB, bool rays, out bool inRange)
+        {
+            bool swap = Order.Swap(oA, dA, oB, dB);
+            return Math.Sqrt(Unbounded(swap ? oB : oA, swap ? dB : dA, rays, swap ? oA : oB, swap ? dA : dB, rays, out _, out _, out inRange));
+        }
+
         /// <summary>
         /// <see cref="Unbounded"/> as a result: the witnesses Origin + t·Direction of each shape. Should either point or
         /// parameter lie beyond <paramref name="range"/> (the float API passes float.MaxValue), or a parameter beyond
@@ -737,8 +778,10 @@ namespace ProximityLib.Double
             var pa = oA + dA * s;
             // Meeting shapes answer one common point (the contract for two non-solids).
             var pb = r2 == 0 ? pa : oB + dB * t;
-            if (!Within(pa, range) || !Within(pb, range) || !(Math.Abs(s) <= range) || !(Math.Abs(t) <= range))
-                return FarWitnesses(oA, dA, rayA, oB, dB, rayB, r2);
+            // One comparison of the largest magnitude (hardware maxes: ±∞ orders; the NaN of a parameter past reach is
+            // tested on its own, as the max would drop it).
+            double big = Num.Max(Num.Max(Range.MaxAbs(pa), Range.MaxAbs(pb)), Num.Max(Math.Abs(s), Math.Abs(t)));
+            if (big > range || double.IsNaN(s)) return FarWitnesses(oA, dA, rayA, oB, dB, rayB, r2);
             return new DistanceResult3(Math.Sqrt(r2), r2, pa, pb, s, t);
         }
 

@@ -28,10 +28,18 @@ namespace ProximityLib.Double
         }
         /// <summary>Signed closest distance between a line and a line (3D) without the witness points: the Distance of <see cref="Between(in Line3, in Line3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(in Line3 a, in Line3 b) => Between(a, b).Distance;
+        public static double Distance(in Line3 a, in Line3 b)
+        {
+            var r = DistanceCore(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b).Distance;
+        }
         /// <summary>Signed closest distance between a line and a line (2D) without the witness points: the Distance of <see cref="Between(in Line2, in Line2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Distance(in Line2 a, in Line2 b) => Between(a, b).Distance;
+        public static double Distance(in Line2 a, in Line2 b)
+        {
+            var r = DistanceCore(a, b, out bool inRange);
+            return inRange ? r : Slow(a, b).Distance;
+        }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static DistanceResult3 Slow(in Line3 a, in Line3 b) => Wide.Between(a, b, double.MaxValue, static (x, y, range) => Core(x, y, range, out _));
@@ -75,10 +83,10 @@ namespace ProximityLib
         public static DistanceResult2 Between(in Line2 a, in Line2 b) => new DistanceResult2(Dbl.ClosestDistance.Core(a.Inner, b.Inner, float.MaxValue, out _));
         /// <summary>Signed closest distance between a line and a line (3D), computed in double, without the witness points: the Distance of <see cref="Between(in Line3, in Line3)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(in Line3 a, in Line3 b) => Between(a, b).Distance;
+        public static float Distance(in Line3 a, in Line3 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
         /// <summary>Signed closest distance between a line and a line (2D), computed in double, without the witness points: the Distance of <see cref="Between(in Line2, in Line2)"/>, bit for bit.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static float Distance(in Line2 a, in Line2 b) => Between(a, b).Distance;
+        public static float Distance(in Line2 a, in Line2 b) => (float)Dbl.ClosestDistance.DistanceCore(a.Inner, b.Inner, out _);
     }
 
     public static partial class ProximityQuery

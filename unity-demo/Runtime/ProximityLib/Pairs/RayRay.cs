@@ -14,13 +14,19 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static DistanceResult2 Core(in Ray2 a, in Ray2 b, double range, out bool inRange) =>
             Kernels.OrderedUnboundedPair(a.Origin.To3(), a.Direction.To3(), b.Origin.To3(), b.Direction.To3(), true, range, out inRange).To2();
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static double DistanceCore(in Ray3 a, in Ray3 b, out bool inRange) =>
+            Kernels.OrderedUnboundedDistance(a.Origin, a.Direction, b.Origin, b.Direction, true, out inRange);
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static double DistanceCore(in Ray2 a, in Ray2 b, out bool inRange) =>
+            Kernels.OrderedUnboundedDistance(a.Origin.To3(), a.Direction.To3(), b.Origin.To3(), b.Direction.To3(), true, out inRange);
     }
 
     public static partial class ProximityQuery
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(in Ray3 a, in Ray3 b, out bool inRange) => ClosestDistance.Core(a, b, double.MaxValue, out inRange).Distance <= 0;
+        internal static bool Core(in Ray3 a, in Ray3 b, out bool inRange) => ClosestDistance.DistanceCore(a, b, out inRange) <= 0;
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool Core(in Ray2 a, in Ray2 b, out bool inRange) => ClosestDistance.Core(a, b, double.MaxValue, out inRange).Distance <= 0;
+        internal static bool Core(in Ray2 a, in Ray2 b, out bool inRange) => ClosestDistance.DistanceCore(a, b, out inRange) <= 0;
     }
 }

@@ -157,7 +157,8 @@ namespace ProximityLib.Double
             var ld = box.ToLocal(b - a);
             Vector3D lo = box.Lo, hi = box.Hi, c = box.LocalCenter, h = box.Half;
             double t, dist;
-            if (!SegmentBoxOverlapsLocal(la - c, ld, h, box.Planar))
+            bool apart = !SegmentBoxOverlapsLocal(la - c, ld, h, box.Planar);
+            if (apart)
             {
                 double g = SegmentBoxLocal(la, ld, lo, hi, out t);
                 inRange &= Range.In(g);
@@ -197,7 +198,8 @@ namespace ProximityLib.Double
                 // pushed along the wrong one leaves up to the radius of overlap; the near-touch normal is exact.
                 outward = -NearCapsuleBoxNormal(a, b, box, -outward);
             }
-            dist = -depth - r;
+            // Apart by the verdict, the depth is 0 and the distance the zero gap's, +0 (as CapsuleBoxDistance has it), not −0.
+            dist = (apart ? 0 : -depth) - r;
             return new DistanceResult3(dist, dist > 0 ? dist * dist : 0, onAxis - outward * r, onBox, t, 0);
         }
 
