@@ -112,7 +112,7 @@ namespace ProximityTests.Pairs
         }
 
         /// <summary>One witness an origin (parameter 0), the other that origin's projection on its line (u the unit direction), either way round.</summary>
-        internal static void OriginAndProjection(Vector3D pa, double ta, Vector3D oa, Vector3D pb, double tb, Vector3D ob, Vector3D ub, double rel = 1e-14)
+        private static void OriginAndProjection(Vector3D pa, double ta, Vector3D oa, Vector3D pb, double tb, Vector3D ob, Vector3D ub, double rel = 1e-14)
         {
             if (ta == 0)
             {

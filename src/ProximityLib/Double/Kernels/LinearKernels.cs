@@ -236,7 +236,7 @@ namespace ProximityLib.Double
         /// <summary>2^-900: a cross product of unit directions this small is formed again, lifted (<see cref="LiftedCrossing"/>).</summary>
         private const double TinyNormal = 1.1830521861667747e-271;
 
-        /// <summary>2^541: parameters up to this are within reach of any origins the fast path answers for (|w| ≥ 2^-480).</summary>
+        /// <summary>2^541: parameters up to this are within reach of any origins the fast path answers for (|w| ≥ 2^-480; a line and a half-space: |o − p| ≥ 2^-450).</summary>
         private const double NoReachBelow = 7.198262071269114e+162;
 
         /// <summary>2^1022: parameters up to this (times the origins' magnitude) keep every product and sum of the witness refinement finite.</summary>
@@ -778,10 +778,11 @@ namespace ProximityLib.Double
             var pa = oA + dA * s;
             // Meeting shapes answer one common point (the contract for two non-solids).
             var pb = r2 == 0 ? pa : oB + dB * t;
-            // One comparison of the largest magnitude (hardware maxes: ±∞ orders; the NaN of a parameter past reach is
-            // tested on its own, as the max would drop it).
-            double big = Num.Max(Num.Max(Range.MaxAbs(pa), Range.MaxAbs(pb)), Num.Max(Math.Abs(s), Math.Abs(t)));
-            if (big > range || double.IsNaN(s)) return FarWitnesses(oA, dA, rayA, oB, dB, rayB, r2);
+            // Non-short-circuit ands: one branch, not eight (a NaN parameter past reach fails its comparison).
+            bool fits = (Math.Abs(pa.X) <= range) & (Math.Abs(pa.Y) <= range) & (Math.Abs(pa.Z) <= range)
+                      & (Math.Abs(pb.X) <= range) & (Math.Abs(pb.Y) <= range) & (Math.Abs(pb.Z) <= range)
+                      & (Math.Abs(s) <= range) & (Math.Abs(t) <= range);
+            if (!fits) return FarWitnesses(oA, dA, rayA, oB, dB, rayB, r2);
             return new DistanceResult3(Math.Sqrt(r2), r2, pa, pb, s, t);
         }
 

@@ -129,8 +129,7 @@ namespace ProximityLib.Double
                     var x = o + u * t;
                     // Past 2^1022·M (M the inputs' magnitude to its power of two) as for two lines (Unbounded): the
                     // rescaled slow path could not form the point, so neither path takes it.
-                    double perM = Num.InversePowerOfTwo(Num.Max(Range.MaxAbs(o), Range.MaxAbs(p)));
-                    if (!Within(x, range) || !(Math.Abs(t) <= range) || !(Math.Abs(t) * perM <= Reach)) t = 0;
+                    if (!Within(x, range) || !(Math.Abs(t) <= range) || !(Math.Abs(t) <= NoReachBelow || WithinReach(t, t, o, p))) t = 0;
                 }
                 var common = t == 0 ? o : o + u * t;
                 return new DistanceResult3(double.NegativeInfinity, 0, common, common, t, 0);
