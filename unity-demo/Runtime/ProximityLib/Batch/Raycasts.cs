@@ -94,13 +94,13 @@ namespace ProximityLib.Batch
             {
                 float wx = _r.OX - _b.X[i], wy = _r.OY - _b.Y[i], wz = _r.OZ - _b.Z[i], r = _b.R[i];
                 float dx = _r.DX, dy = _r.DY, dz = _r.DZ;
-                var wl = MathF.Sqrt(wx * wx + wy * wy + wz * wz);
+                var wl = Runner.Sqrt(wx * wx + wy * wy + wz * wz);
                 if (wl <= r) return _r.Limit(true, 0);
                 var b = wx * dx + wy * dy + wz * dz;
                 float qx = wx - dx * b, qy = wy - dy * b, qz = wz - dz * b;
-                var h = MathF.Sqrt(qx * qx + qy * qy + qz * qz);
+                var h = Runner.Sqrt(qx * qx + qy * qy + qz * qz);
                 if (!(b < 0 && h <= r)) return float.PositiveInfinity;
-                return _r.Limit(true, (wl - r) * (wl + r) / (MathF.Sqrt((r - h) * (r + h)) - b));
+                return _r.Limit(true, (wl - r) * (wl + r) / (Runner.Sqrt((r - h) * (r + h)) - b));
             }
         }
 
@@ -283,8 +283,8 @@ namespace ProximityLib.Batch
                 float u = u1 - u2, v = v1 - v2, w = w1 - w2;
                 float det = u + v + w;
                 if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return float.PositiveInfinity;
-                float size = Math.Abs(u1) + Math.Abs(v1) + Math.Abs(w1);
-                if (Math.Abs(det) <= size * Ill) return Scalar(i);
+                float size = Runner.Abs(u1) + Runner.Abs(v1) + Runner.Abs(w1);
+                if (Runner.Abs(det) <= size * Ill) return Scalar(i);
                 float t = (u * az + v * bz + w * cz) / (det * _dz) + 0f;
                 return _r.Limit(t >= 0, t);
             }

@@ -135,6 +135,22 @@ namespace ProximityLib.Batch
         public static float Clamp(float x, float lo, float hi) => x > lo ? (x < hi ? x : hi) : (lo < hi ? lo : hi);
 
         /// <summary>
+        /// |x| for the scalar lanes, through double: Mono 6.8 compiles <c>Math.Abs(float)</c> as a call, which spills every
+        /// live register around it (the OBB–OBB verdicts took twice as long), and its <c>Math.Abs(double)</c> as one
+        /// instruction. The absolute value is exact in either precision, so the bits are <c>Math.Abs(x)</c>'s.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static float Abs(float x) => (float)Math.Abs((double)x);
+
+        /// <summary>
+        /// √x for the scalar lanes, through double for the reason <see cref="Abs(float)"/> gives (Mono 6.8 calls out for
+        /// <c>MathF.Sqrt</c>). The double root rounded to float is the correctly rounded float root, as <c>MathF.Sqrt</c>
+        /// and the vector lanes' give it: double rounding is innocuous for √ when 53 ≥ 2·24 + 2 (Figueroa 1995).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static float Sqrt(float x) => (float)Math.Sqrt(x);
+
+        /// <summary>
         /// The smaller of a and b as <see cref="Vector.Min{T}"/> gives it on .NET 9 and later (IEEE 754-2019 minimum): −0
         /// below +0, NaN if either is NaN. Scalar <c>Math.Min</c> does not do that on every runtime.
         /// </summary>
