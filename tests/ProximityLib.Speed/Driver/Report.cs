@@ -153,7 +153,8 @@ namespace ProximitySpeed
             foreach (var mode in modes)
                 md.AppendLine($"- {mode.Title}: {m.Runs[mode][0].Runtime}, {m.Runs[mode].Count} processes, clock: {m.Runs[mode][0].Clock}, " +
                               $"Vector<T> {m.Runs[mode][0].Vector}, " +
-                              $"warm-up passes {string.Join("/", m.Runs[mode].Select(r => r.WarmUpPasses))}.");
+                              $"warm-up passes {string.Join("/", m.Runs[mode].Select(r => r.WarmUpPasses))}, " +
+                              $"process slowdowns {string.Join("/", m.Slowdown(mode).Select(f => f.ToString("0.00", CultureInfo.InvariantCulture)))}.");
             md.AppendLine($"- {m.Options.Rounds} rounds per process, samples of about {m.Options.SampleMs} ms of CPU time, " +
                           $"{Inputs.Count} input pairs per query ({m.Options.Distribution}: half apart, half overlapping, shuffled).");
             if (reproduced != null)
@@ -224,6 +225,11 @@ namespace ProximitySpeed
                           "in random order and a group's cases (library, baseline, batch) back to back in random order, so load changes fall on " +
                           "all of them alike. A case's time is the median over rounds, then the median across processes; the thread's CPU time is " +
                           "the clock, so time spent descheduled by other processes is not counted.");
+            md.AppendLine("- Now and then a whole process runs about 1.4 times as long on this shared VM, every case alike, for its lifetime. " +
+                          "Each process's slowdown (the median over cases of its time ÷ the case's median across processes, relative to the " +
+                          "fastest process; listed above) is divided out of its times before the median across processes, so the times are " +
+                          "the fastest process's speed. Ratios within a process (library ÷ baseline, batch ÷ scalar, now ÷ old) are not " +
+                          "scaled; the no-PGO ÷ default ratio compares two modes' scaled times.");
             md.AppendLine("- Before timing, every case runs repeatedly with pauses until the runtime stops compiling (tiering, OSR and PGO's " +
                           "instrumented code otherwise leave loops in unoptimised code); Mono compiles once.");
             md.AppendLine("- The baselines (tests/ProximityLib.Speed.Cases/Baselines.cs) are the simplest correct C# for the same answer, written " +

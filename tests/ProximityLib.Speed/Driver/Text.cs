@@ -68,8 +68,9 @@ namespace ProximitySpeed
     }
 
     /// <summary>
-    /// Every case's median per mode, written by --save (mode, case, median across processes, each process's median over
-    /// rounds; tab-separated), and the comparison of two such files (compare).
+    /// Every case's median per mode, written by --save (mode, case, median across processes with each process's
+    /// slowdown divided out, each process's own median over rounds; tab-separated), and the comparison of two such
+    /// files (compare).
     /// </summary>
     public static class Saved
     {
