@@ -242,8 +242,8 @@ namespace ProximityReference.Fuzz
             var absD = Dy.Abs(d0);
             // Near the range's end either answer may come (the library decides on rounded points): the fallback
             // is recognised by its origin, and real witnesses get the check.
-            if (FarClosestPoints(first, second, 0) && (r.TA == 0 || r.TB == 0)) { }
-            else if (!DyMath.AtMostRoot(absD - tolW, w2) || !DyMath.AtLeastRoot(absD + tolW, w2))
+            bool farFallback = FarClosestPoints(first, second, 0) && (r.TA == 0 || r.TB == 0);
+            if (!farFallback && (!DyMath.AtMostRoot(absD - tolW, w2) || !DyMath.AtLeastRoot(absD + tolW, w2)))
                 Fail("b witness distance", $"{call}: |PointB − PointA| = {DyMath.Sqrt(w2):R} but |Distance| = {N(Math.Abs(r.D))}; {tolText}", code);
 
             // (c) witnesses on or in their shapes (a segment's at its reported parameter).

@@ -1335,10 +1335,6 @@ namespace ProximityReference.Fuzz
         }
 
         /// <summary>
-        /// A line's or ray's origin moved far along it (2^10…2^60 of the size; 2^30 in float), the rest as "random":
-        /// parameters and witnesses far from the origin, where cancellation in Origin + t·Direction shows.
-        /// </summary>
-        /// <summary>
         /// Two lines or rays, or a line or ray and a half-space, so nearly parallel that they meet (or come closest) far
         /// away: near the end of the precision's range (half the cases, within 2^±8 of it, so on either side), or at up
         /// to 2^1100 of their own size (angles down to the subnormal range). Directions are sometimes axis-aligned before
@@ -1382,6 +1378,10 @@ namespace ProximityReference.Fuzz
             return new Vector3D(i == 0 ? sign : 0, i == 1 ? sign : 0, i == 2 ? sign : 0);
         }
 
+        /// <summary>
+        /// A line's or ray's origin moved far along it (2^10…2^60 of the size; 2^30 in float), the rest as "random":
+        /// parameters and witnesses far from the origin, where cancellation in Origin + t·Direction shows.
+        /// </summary>
         private static (Spec, Spec) FarAlong(Rng r, Kind ka, Kind kb, int dim, Precision p)
         {
             double s = r.Pow2(-10, 10);

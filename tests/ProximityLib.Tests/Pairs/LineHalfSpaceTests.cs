@@ -37,7 +37,7 @@ namespace ProximityTests.Pairs
                 Assert.That(r.Distance, Is.EqualTo(double.NegativeInfinity));
                 Assert.That((r.PointA, r.PointB, r.ParameterA), Is.EqualTo((o, o, 0.0)));
             }
-            // Within the range the crossing stands: 1e300 / 1e-10·… lands at 1e306 from 1e296.
+            // Within the range the crossing stands: from 1e296, descending 1e-10 per unit, the line crosses at 1e306.
             var near = ClosestDistance.Between(new Line3(V(0, 1e296, 0), V(1, -1e-10, 0)), ground);
             Assert.That(near.PointA.X, Is.EqualTo(1e306).Within(1e-12).Percent);
         }
