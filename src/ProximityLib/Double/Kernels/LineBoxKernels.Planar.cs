@@ -60,16 +60,7 @@ namespace ProximityLib.Double
                 TryRayFace2(m.X, d.X, h.X, new Vector2D(1, 0), ref best, ref dir);
                 TryRayFace2(m.Y, d.Y, h.Y, new Vector2D(0, 1), ref best, ref dir);
             }
-            var axis = new Vector2D(d.Y, -d.X);
-            double len2 = axis.LengthSquared;
-            if (len2 > 0 && !double.IsInfinity(len2))
-            {
-                double p = m.X * d.Y - m.Y * d.X, r = h.X * Math.Abs(d.Y) + h.Y * Math.Abs(d.X);
-                double len = Math.Sqrt(len2);
-                double down = (p + r) / len, up = (r - p) / len;
-                if (down < best) { best = down; dir = axis * (-1 / len); }
-                if (up < best) { best = up; dir = axis * (1 / len); }
-            }
+            TryNormalAxis2(m, d, h, ref best, ref dir);
             return best;
         }
 

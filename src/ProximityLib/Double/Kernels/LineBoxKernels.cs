@@ -184,7 +184,8 @@ namespace ProximityLib.Double
             if (depth > 0)
             {
                 var moved = la + dir * depth;
-                SegmentBoxLocal(moved, ld, lo, hi, out t);
+                t = TouchingParameter(la - c, ld, h, dir);
+                if (double.IsNaN(t)) SegmentBoxLocal(moved, ld, lo, hi, out t);
                 onAxis = SegmentPoint(a, b, t);
                 onBox = ClampToBox(box, moved + ld * t);
             }

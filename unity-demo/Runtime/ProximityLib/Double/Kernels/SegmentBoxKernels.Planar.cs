@@ -91,7 +91,8 @@ namespace ProximityLib.Double
 
             double depth = Num.Max(SegmentBoxPenetration2(la - c, ld, h, out var dir), 0);
             var moved = la + dir * depth;
-            SegmentBoxLocal2(moved, ld, lo, hi, out t);
+            t = depth > 0 ? TouchingParameter2(la - c, ld, h, dir) : double.NaN;
+            if (double.IsNaN(t)) SegmentBoxLocal2(moved, ld, lo, hi, out t);
             d2 = 0;
             onBox = ClampLocal2(moved + ld * t, lo, hi);
             touching = !(depth > 0);
@@ -164,17 +165,32 @@ namespace ProximityLib.Double
             dir = default;
             TryFaceAxis2(m.X, d.X, h.X, new Vector2D(1, 0), ref best, ref dir);
             TryFaceAxis2(m.Y, d.Y, h.Y, new Vector2D(0, 1), ref best, ref dir);
+            TryNormalAxis2(m, d, h, ref best, ref dir);
+            return best;
+        }
+
+        /// <summary>
+        /// <see cref="TryCrossAxis"/> in the plane: the normal (d.Y, −d.X) of the segment or line m + t·d, along which it
+        /// projects to one value p and the box of half-extents h to [−r, r]; the shorter push competes.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void TryNormalAxis2(Vector2D m, Vector2D d, Vector2D h, ref double best, ref Vector2D dir)
+        {
             var axis = new Vector2D(d.Y, -d.X);
             double len2 = axis.LengthSquared;
-            if (len2 > 0 && !double.IsInfinity(len2))
-            {
-                double p = m.X * d.Y - m.Y * d.X, r = h.X * Math.Abs(d.Y) + h.Y * Math.Abs(d.X);
-                double len = Math.Sqrt(len2);
-                double down = (p + r) / len, up = (r - p) / len;
-                if (down < best) { best = down; dir = axis * (-1 / len); }
-                if (up < best) { best = up; dir = axis * (1 / len); }
-            }
-            return best;
+            if (!(len2 > 0) || double.IsInfinity(len2)) return;
+            double p = m.X * d.Y - m.Y * d.X, r = h.X * Math.Abs(d.Y) + h.Y * Math.Abs(d.X);
+            double len = Math.Sqrt(len2);
+            double push = (r - Math.Abs(p)) / len;
+            if (push < best) { best = push; dir = axis * ((p > 0 ? 1 : -1) / len); }
+        }
+
+        /// <summary><see cref="TouchingParameter"/> in the plane: a face, or the corner the push along the segment's normal points to.</summary>
+        private static double TouchingParameter2(Vector2D m, Vector2D d, Vector2D h, Vector2D dir)
+        {
+            if (dir.Y == 0) return FaceTouch(m.X, d.X, dir.X, m.Y, d.Y, h.Y, 0, 0, 0);
+            if (dir.X == 0) return FaceTouch(m.Y, d.Y, dir.Y, m.X, d.X, h.X, 0, 0, 0);
+            return EdgeTouch(m.X, d.X, dir.X, h.X, m.Y, d.Y, dir.Y, h.Y, 0, 0, 0);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -183,8 +199,9 @@ namespace ProximityLib.Double
             double e = m + d;
             double down = Num.Max(m, e) + h;
             double up = h - Num.Min(m, e);
-            if (down < best) { best = down; dir = -n; }
-            if (up < best) { best = up; dir = n; }
+            bool upward = up < down;
+            double push = upward ? up : down;
+            if (push < best) { best = push; dir = upward ? n : -n; }
         }
 
         /// <summary><see cref="SegmentBoxOverlapsLocal"/> in the plane: the two slabs and the segment's normal.</summary>
