@@ -30,5 +30,21 @@ namespace ProximityTests.Pairs
             Assert.That(r.Distance, Is.EqualTo(-(Math.Sqrt(2) - 1)).Within(1e-15));
             Assert.That(ProximityQuery.Overlaps(new Aabb2(V(-1, -1), V(1, 1)), box), Is.True);
         }
+
+        [Test]
+        public void TouchingWithASubRoundingOffsetScalesExactly()
+        {
+            // Fuzz seed 2041 (case 2000000028943): the boxes touch, and B's centre lies 2^-108 off the plane x = 0 (about
+            // 2^-117 of the size). Scaled by 2^-446 that offset's square underflows, and the touching pair's candidates
+            // were told apart by equal zeros: PointA.X came out 0 there instead of 3.08e-33 · 2^-446. 2^k scaling is exact.
+            var a = new Aabb3(V(0, -128, 0), V(448, 0, 128));
+            var b = Obb3.FromQuaternion(V(3.0814879110195774E-33, 96, -64), 1, -1, 1, 1, V(64, 0, 96));
+            double k = Math.Pow(2, -446);
+            var r = ClosestDistance.Between(a, b);
+            var rs = ClosestDistance.Between(new Aabb3(a.Min * k, a.Max * k), Obb3.FromQuaternion(b.Center * k, 1, -1, 1, 1, b.HalfExtents * k));
+            Assert.That(rs.Distance, Is.EqualTo(r.Distance * k));
+            Assert.That(rs.PointA, Is.EqualTo(r.PointA * k));
+            Assert.That(rs.PointB, Is.EqualTo(r.PointB * k));
+        }
     }
 }

@@ -18,7 +18,7 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.NoInlining)]
         public static DistanceResult3 BoxBox(in Box a, in Box b, out bool inRange)
         {
-            double size = Size(a, b);
+            double size = Size(a, b), k = Num.InversePowerOfTwo(size);
             inRange = Range.Box(size);
             // Relative to A's origin: B's origin there is the same difference the overlap test forms, so the verdict is
             // the overlap query's own (the two agree).
@@ -28,7 +28,7 @@ namespace ProximityLib.Double
             // Apart: the depth search below has nothing to add.
             if (!BoxBoxOverlaps(a, b))
             {
-                double gap = BoxesApart(a, default, b, d, 0, out onA, out onB);
+                double gap = BoxesApart(a, default, b, d, 0, k, out onA, out onB);
                 // A subnormal squared gap has lost bits, and a zero one is rare here (the boxes are apart) and may have
                 // underflowed: the slow path answers both at a scale where they have not (2^k-scaled inputs agree).
                 inRange &= Range.In(gap);
@@ -39,9 +39,10 @@ namespace ProximityLib.Double
             double depth = Penetration(a, b, cb - ca, out var push);
             // A moved by the push just touches B: its squared gap there is rounding, and any pair within 2^-50·S of
             // touching realises the depth as well as the nearest one (apart by rounding, the gap must be the least).
+            // BoxesApart compares at the scale k, where S is about 1.
             if (depth < 0) push = default;
-            double touch = size * (1.0 / (1L << 50)), enough = depth < 0 ? 0 : touch * touch;
-            double g = BoxesApart(a, push, b, d, enough, out onA, out onB);
+            double touch = size * k * (1.0 / (1L << 50)), enough = depth < 0 ? 0 : touch * touch;
+            double g = BoxesApart(a, push, b, d, enough, k, out onA, out onB);
             onA = onA - push + shift;
             onB += shift;
             if (depth < 0)
@@ -59,7 +60,8 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.NoInlining)]
         public static double BoxBoxDistance(in Box a, in Box b, out bool inRange)
         {
-            inRange = Range.Box(Size(a, b));
+            double size = Size(a, b);
+            inRange = Range.Box(size);
             var d = b.Origin - a.Origin;
             if (BoxBoxOverlaps(a, b))
             {
@@ -68,7 +70,7 @@ namespace ProximityLib.Double
                 double depth = Penetration(a, b, cb - ca, out _);
                 if (depth >= 0) return -depth;
             }
-            double gap = BoxesApart(a, default, b, d, 0, out _, out _);
+            double gap = BoxesApart(a, default, b, d, 0, Num.InversePowerOfTwo(size), out _, out _);
             inRange &= Range.In(gap); // a zero gap of boxes found apart may have underflowed: the slow path
             return Math.Sqrt(gap);
         }
@@ -208,10 +210,13 @@ namespace ProximityLib.Double
         /// are minimised (the closed form of <see cref="SegmentBoxLocal"/>), and only while a lower bound on their
         /// distance (their squared gaps along B's axes, summed: no point of the edge is nearer on any axis) does not
         /// exceed the best pair (with a margin, so rounding never hides a win). The search also stops once the best
-        /// squared gap is at most <paramref name="enough"/>.
+        /// squared gap is at most <paramref name="enough"/>. The gaps are compared scaled by k, the power of two that brings
+        /// the configuration's size near 1 (<paramref name="enough"/> is at that scale; the gap returned is not): at the
+        /// small end of the fast range the squares of sub-rounding gaps between touching boxes underflow to equal zeros,
+        /// and the first of them is not the pair the same boxes scaled up pick (fuzz seed 2041), as in BoxesApart2.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static double BoxesApart(in Box a, Vector3D originA, in Box b, Vector3D originB, double enough, out Vector3D onA, out Vector3D onB)
+        private static double BoxesApart(in Box a, Vector3D originA, in Box b, Vector3D originB, double enough, double k, out Vector3D onA, out Vector3D onB)
         {
             bool planar = a.Planar || b.Planar;
             // Rows: A's axes in B's frame (a_i · b_j); the columns are B's axes in A's frame (the same products).
@@ -234,26 +239,29 @@ namespace ProximityLib.Double
             var ey = by * eb.Y;
             var ez = bz * eb.Z;
             var pb = a.ToLocal(d) + bx * loB.X + by * loB.Y + bz * loB.Z;
+            // The search's copies, scaled by k (exact where nothing underflows: the same comparisons as unscaled there).
+            Vector3D spa = pa * k, sdx = dx * k, sdy = dy * k, sdz = dz * k, spb = pb * k, sex = ex * k, sey = ey * k, sez = ez * k;
+            Vector3D sloA = loA * k, shiA = hiA * k, sloB = loB * k, shiB = hiB * k;
 
             // win: 0–7 A's corner, 8–15 B's corner, 16 + 8i + c the edge from corner c along axis i.
             int win;
             double best, winT = 0;
             uint edges;
-            if (enough > 0 && !planar && Touching(originA, a, b, pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA, enough, out best, out win, out winT))
+            if (enough > 0 && !planar && Touching(originA, a, b, spa, sdx, sdy, sdz, sloB, shiB, spb, sex, sey, sez, sloA, shiA, enough, out best, out win, out winT))
                 edges = 0;
             else
                 // Every vertex against the other box, and the edges of A to minimise (bit 8i + c: the edge from corner c
                 // along axis i).
-                best = Vertices(pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA, planar, out win, out edges);
+                best = Vertices(spa, sdx, sdy, sdz, sloB, shiB, spb, sex, sey, sez, sloA, shiA, planar, out win, out edges);
             // Those whose lower bound does not exceed the best pair, until the best is good enough.
             for (int bit = 0; edges >> bit != 0 && best > enough; bit++)
             {
                 if (((edges >> bit) & 1) == 0) continue;
                 int i = bit >> 3, from = bit & 7;
-                var dir = i == 0 ? dx : (i == 1 ? dy : dz);
-                var p = Corner(pa, dx, dy, dz, from);
-                if (SpanGap2(p, Corner(pa, dx, dy, dz, from | (1 << i)), loB, hiB) > best * (1 + 1e-9)) continue;
-                double g = SegmentBoxLocal(p, dir, loB, hiB, out double t);
+                var dir = i == 0 ? sdx : (i == 1 ? sdy : sdz);
+                var p = Corner(spa, sdx, sdy, sdz, from);
+                if (SpanGap2(p, Corner(spa, sdx, sdy, sdz, from | (1 << i)), sloB, shiB) > best * (1 + 1e-9)) continue;
+                double g = SegmentBoxLocal(p, dir, sloB, shiB, out double t);
                 if (g < best) { best = g; win = 16 + bit; winT = t; }
             }
 
@@ -278,7 +286,8 @@ namespace ProximityLib.Double
                 onA = originA + a.ToWorldOffset(local);
                 onB = originB + b.ToWorldOffset(Clamp(Corner(pa, dx, dy, dz, from) + dir * winT, loB, hiB));
             }
-            return best;
+            double ik = 1 / k;
+            return best * ik * ik;
         }
 
         /// <summary>
