@@ -143,8 +143,8 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
-        /// <see cref="Penetration"/> on AVX2 lanes: A's and B's face normals in one group (A's and B's z in a second), and
-        /// a_i × b_j for the three j of each i in one group each (lane 3 is u × ±u = 0 exactly, so not an axis). Every
+        /// <see cref="Penetration"/> on AVX2 lanes: the 15 axes in four groups of four in the scalar form's order (A's and
+        /// B's x and y normals; their z normals and a_x × b_x, a_x × b_y; then the other a_i × b_j; the last lane none). Every
         /// lane makes the operations of <see cref="TryAxis"/> on its axis and keeps the smaller of its two overlaps; the
         /// first axis holding the least (in the scalar form's order) is then tried alone by <see cref="TryAxis"/>, so both
         /// forms return the same bits.
@@ -156,33 +156,37 @@ namespace ProximityLib.Double
             var g0 = Overlap(a, b, ha, hb, t, Vector256.Create(ax.X, ay.X, bx.X, by.X), Vector256.Create(ax.Y, ay.Y, bx.Y, by.Y),
                 Vector256.Create(ax.Z, ay.Z, bx.Z, by.Z));
             var inf = Vector256.Create(double.PositiveInfinity);
-            Vector256<double> g1 = inf, g2 = inf, g3 = inf, g4 = inf;
+            Vector256<double> g1 = inf, g2 = inf, g3 = inf;
             if (!(a.Planar || b.Planar))
             {
-                g1 = Overlap(a, b, ha, hb, t, Vector256.Create(az.X, bz.X, 0, 0), Vector256.Create(az.Y, bz.Y, 0, 0), Vector256.Create(az.Z, bz.Z, 0, 0));
-                // B's axes as columns: lane j holds b_j.
+                // B's axes as columns: lane j holds b_j. Each a_i × b_j triple in its lanes 0–2 (lane 3: u × ±u = 0),
+                // then packed with A's and B's z into three groups in the scalar order: (a_z, b_z, a_x×b_x, a_x×b_y),
+                // (a_x×b_z, a_y×b_x, a_y×b_y, a_y×b_z), (a_z×b_x, a_z×b_y, a_z×b_z, none): four Overlap calls for the
+                // 15 axes instead of five (the lanes keep their values: moving them changes no bits).
                 Vector256<double> cx = Vector256.Create(bx.X, by.X, bz.X, 0), cy = Vector256.Create(bx.Y, by.Y, bz.Y, 0), cz = Vector256.Create(bx.Z, by.Z, bz.Z, 0);
-                g2 = CrossOverlap(a, b, ha, hb, t, ax, cx, cy, cz);
-                g3 = CrossOverlap(a, b, ha, hb, t, ay, cx, cy, cz);
-                g4 = CrossOverlap(a, b, ha, hb, t, az, cx, cy, cz);
+                EdgeCrosses(ax, cx, cy, cz, out var xx, out var xy, out var xz);
+                EdgeCrosses(ay, cx, cy, cz, out var yx, out var yy, out var yz);
+                EdgeCrosses(az, cx, cy, cz, out var zx, out var zy, out var zz);
+                g1 = Overlap(a, b, ha, hb, t, PackFirst(az.X, bz.X, xx), PackFirst(az.Y, bz.Y, xy), PackFirst(az.Z, bz.Z, xz));
+                g2 = Overlap(a, b, ha, hb, t, PackSecond(xx, yx), PackSecond(xy, yy), PackSecond(xz, yz));
+                g3 = Overlap(a, b, ha, hb, t, zx, zy, zz);
             }
             // The hardware's min (Vector256.Min spends eight more instructions per call on NaN and zero-sign rules): the
             // lanes are never NaN in range, and only which lanes equal the least matters, where −0 == +0.
-            var m = Vector256.MinNative(Vector256.MinNative(Vector256.MinNative(g0, g1), Vector256.MinNative(g2, g3)), g4);
+            var m = Vector256.MinNative(Vector256.MinNative(g0, g1), Vector256.MinNative(g2, g3));
             m = Vector256.MinNative(m, Avx.Permute(m, 0b0101));
             m = Vector256.MinNative(m, Avx.Permute2x128(m, m, 1));
             // The first axis (in the scalar order) holding the least value, tried alone by the scalar form.
-            ulong hits = Vector256.Equals(g0, m).ExtractMostSignificantBits() | (Vector256.Equals(g1, m).ExtractMostSignificantBits() << 4)
-                | (Vector256.Equals(g2, m).ExtractMostSignificantBits() << 8) | (Vector256.Equals(g3, m).ExtractMostSignificantBits() << 12)
-                | ((ulong)Vector256.Equals(g4, m).ExtractMostSignificantBits() << 16);
+            uint hits = Vector256.Equals(g0, m).ExtractMostSignificantBits() | (Vector256.Equals(g1, m).ExtractMostSignificantBits() << 4)
+                | (Vector256.Equals(g2, m).ExtractMostSignificantBits() << 8) | (Vector256.Equals(g3, m).ExtractMostSignificantBits() << 12);
             double best = double.PositiveInfinity, scale = 0;
             Vector3D axis = default;
             if (hits != 0)
             {
-                int bit = System.Numerics.BitOperations.TrailingZeroCount(hits), group = bit >> 2, lane = bit & 3;
-                var v = group == 0 ? (lane == 0 ? ax : lane == 1 ? ay : lane == 2 ? bx : by)
-                    : group == 1 ? (lane == 0 ? az : bz)
-                    : EdgeCross(group == 2 ? ax : group == 3 ? ay : az, lane == 0 ? bx : lane == 1 ? by : bz);
+                int bit = System.Numerics.BitOperations.TrailingZeroCount(hits), e = bit - 6;
+                var v = bit < 4 ? (bit == 0 ? ax : bit == 1 ? ay : bit == 2 ? bx : by)
+                    : bit == 4 ? az : bit == 5 ? bz
+                    : EdgeCross(e < 3 ? ax : e < 6 ? ay : az, e % 3 == 0 ? bx : e % 3 == 1 ? by : bz);
                 TryAxis(v, ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
             }
             push = axis * scale;
@@ -210,18 +214,33 @@ namespace ProximityLib.Double
         private static Vector256<double> Dot(Vector3D u, Vector256<double> x, Vector256<double> y, Vector256<double> z) =>
             Vector256.Create(u.X) * x + Vector256.Create(u.Y) * y + Vector256.Create(u.Z) * z;
 
-        /// <summary><see cref="Overlap"/> on <see cref="EdgeCross"/>(u, c_j) for the columns c_j in the lanes (lane 3: u × ±u = 0, no axis).</summary>
+        /// <summary>
+        /// The components of <see cref="EdgeCross"/>(u, c_j) for the columns c_j in the lanes (lane 3: u × ±u = 0, no
+        /// axis), each lane the scalar form's operations.
+        /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static Vector256<double> CrossOverlap(in Box a, in Box b, Vector3D ha, Vector3D hb, Vector3D t, Vector3D u,
-            Vector256<double> cx, Vector256<double> cy, Vector256<double> cz)
+        private static void EdgeCrosses(Vector3D u, Vector256<double> cx, Vector256<double> cy, Vector256<double> cz,
+            out Vector256<double> x, out Vector256<double> y, out Vector256<double> z)
         {
             Vector256<double> ux = Vector256.Create(u.X), uy = Vector256.Create(u.Y), uz = Vector256.Create(u.Z);
             var same = Vector256.GreaterThanOrEqual(ux * cx + uy * cy + uz * cz, Vector256<double>.Zero);
             var wx = Vector256.ConditionalSelect(same, cx - ux, cx + ux);
             var wy = Vector256.ConditionalSelect(same, cy - uy, cy + uy);
             var wz = Vector256.ConditionalSelect(same, cz - uz, cz + uz);
-            return Overlap(a, b, ha, hb, t, uy * wz - uz * wy, uz * wx - ux * wz, ux * wy - uy * wx);
+            x = uy * wz - uz * wy;
+            y = uz * wx - ux * wz;
+            z = ux * wy - uy * wx;
         }
+
+        /// <summary>(f, g, c0, c1): two face axes' components, then lanes 0 and 1 of a cross triple.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector256<double> PackFirst(double f, double g, Vector256<double> c) =>
+            Avx.Blend(Vector256.Create(f, g, 0, 0), Avx2.Permute4x64(c, 0b01_00_00_00), 0b1100);
+
+        /// <summary>(c2, d0, d1, d2): lane 2 of one cross triple, then lanes 0–2 of the next.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector256<double> PackSecond(Vector256<double> c, Vector256<double> d) =>
+            Avx.Blend(Avx2.Permute4x64(d, 0b10_01_00_00), Avx2.Permute4x64(c, 0b00_00_00_10), 0b0001);
 
         /// <summary>
         /// <see cref="VerticesScalar"/> on AVX2 lanes, four corners per vector. A lane's corner is the scalar form's sums
