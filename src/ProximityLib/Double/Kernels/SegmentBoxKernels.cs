@@ -120,22 +120,51 @@ namespace ProximityLib.Double
             new Vector3D(Num.Clamp(e.X, lo.X, hi.X), Num.Clamp(e.Y, lo.Y, hi.Y), Num.Clamp(e.Z, lo.Z, hi.Z));
 
         /// <summary>
-        /// Segment against a solid box, in the box frame (<see cref="InFrame"/>); the box witness mapped back to world.
+        /// Segment against a solid OBB, read in place: <see cref="SegmentInFrame"/> on its frame, lo = −h and hi = h. Copying
+        /// the 152-byte <see cref="Box"/> into the call instead took the distance-only query 1.1–1.2 times as long on .NET 10
+        /// and 1.5 times on Mono, and Between 1.2–1.3 times on Mono (ab).
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        public static DistanceResult3 SegmentBox(Vector3D a, Vector3D b, in Box box, out bool inRange)
+        public static DistanceResult3 SegmentObb(Vector3D a, Vector3D b, in Obb3 box, out bool inRange)
         {
-            var ra = a - box.Origin;
-            inRange = Range.Box(Range.MaxAbs(ra, b - box.Origin, box.Hi - box.Lo));
-            double dist = InFrame(box.ToLocal(ra), box.ToLocal(b - a), box.Lo, box.Hi, box.Planar, ref inRange, out double d2, out double t, out var onBox, out bool touching);
-            var onSegment = SegmentPoint(a, b, t);
-            return new DistanceResult3(dist, d2, onSegment, touching ? onSegment : box.Origin + box.ToWorldOffset(onBox), t, 0);
+            var h = box.HalfExtents;
+            return SegmentInFrame(a, b, box.Center, box.AxisX, box.AxisY, box.AxisZ, -h, h, false, out inRange);
         }
 
         /// <summary>
-        /// <see cref="SegmentBox"/> for an AABB given by its corners, without the rotations: its frame is the world's
+        /// Segment against the solid box origin + x·u + y·v + z·w, (u, v, w) in [lo, hi] (the fields of <see cref="Box"/>),
+        /// in the box frame (<see cref="InFrame"/>); the box witness mapped back to world.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static DistanceResult3 SegmentInFrame(Vector3D a, Vector3D b, Vector3D origin, Vector3D x, Vector3D y, Vector3D z,
+            Vector3D lo, Vector3D hi, bool planar, out bool inRange)
+        {
+            var ra = a - origin;
+            inRange = Range.Box(Range.MaxAbs(ra, b - origin, hi - lo));
+            var ld = b - a;
+            double dist = InFrame(new Vector3D(Vector3D.Dot(ra, x), Vector3D.Dot(ra, y), Vector3D.Dot(ra, z)),
+                new Vector3D(Vector3D.Dot(ld, x), Vector3D.Dot(ld, y), Vector3D.Dot(ld, z)), lo, hi, planar, ref inRange,
+                out double d2, out double t, out var onBox, out bool touching);
+            var onSegment = SegmentPoint(a, b, t);
+            return new DistanceResult3(dist, d2, onSegment, touching ? onSegment : origin + (x * onBox.X + y * onBox.Y + z * onBox.Z), t, 0);
+        }
+
+        /// <summary>The Distance of <see cref="SegmentObb"/>, bit for bit, without the witnesses (<see cref="InFrameDistance"/>).</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static double SegmentObbDistance(Vector3D a, Vector3D b, in Obb3 box, out bool inRange)
+        {
+            Vector3D o = box.Center, x = box.AxisX, y = box.AxisY, z = box.AxisZ, h = box.HalfExtents;
+            var ra = a - o;
+            inRange = Range.Box(Range.MaxAbs(ra, b - o, h - (-h)));
+            var ld = b - a;
+            return InFrameDistance(new Vector3D(Vector3D.Dot(ra, x), Vector3D.Dot(ra, y), Vector3D.Dot(ra, z)),
+                new Vector3D(Vector3D.Dot(ld, x), Vector3D.Dot(ld, y), Vector3D.Dot(ld, z)), -h, h, false, ref inRange);
+        }
+
+        /// <summary>
+        /// <see cref="SegmentInFrame"/> for an AABB given by its corners, without the rotations: its frame is the world's
         /// shifted to min, where a dot product with a unit axis, and the map back, are exact, so the answer is the one
-        /// through <see cref="Aabb3.ToBox"/> and Aabb2.ToBox (up to the sign of a zero coordinate). The identity rotations cost the 2D
+        /// on the frame of <see cref="Aabb3.ToBox"/> and Aabb2.ToBox (up to the sign of a zero coordinate). The identity rotations cost the 2D
         /// query a fifth of its time (ab, .NET 10: 47 → 38 ns; 3D 62 → 59).
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
@@ -147,15 +176,6 @@ namespace ProximityLib.Double
             double dist = InFrame(ra, b - a, default, extent, planar, ref inRange, out double d2, out double t, out var onBox, out bool touching);
             var onSegment = SegmentPoint(a, b, t);
             return new DistanceResult3(dist, d2, onSegment, touching ? onSegment : min + onBox, t, 0);
-        }
-
-        /// <summary>The Distance of <see cref="SegmentBox"/>, bit for bit, without the witnesses (<see cref="InFrameDistance"/>).</summary>
-        [MethodImpl(MethodImplOptions.NoInlining)]
-        public static double SegmentBoxDistance(Vector3D a, Vector3D b, in Box box, out bool inRange)
-        {
-            var ra = a - box.Origin;
-            inRange = Range.Box(Range.MaxAbs(ra, b - box.Origin, box.Hi - box.Lo));
-            return InFrameDistance(box.ToLocal(ra), box.ToLocal(b - a), box.Lo, box.Hi, box.Planar, ref inRange);
         }
 
         /// <summary>The Distance of <see cref="SegmentAabb"/>, bit for bit, without the witnesses.</summary>

@@ -80,7 +80,8 @@ namespace ProximityTests.Double.Kernels
                 var max = centre + half;
                 string repro = $"kind {kind}, case {i}: segment ({R(a)}, {R(b)}), OBB {obb}, AABB ({R(min)}, {R(max)})";
 
-                var lifted = K.SegmentBox(a.To3(), b.To3(), obb.ToBox(), out bool liftedIn).To2();
+                var box = obb.ToBox();
+                var lifted = K.SegmentInFrame(a.To3(), b.To3(), box.Origin, box.X, box.Y, box.Z, box.Lo, box.Hi, box.Planar, out bool liftedIn).To2();
                 var planar = K.SegmentBox2(a, b, obb.ToBox2(), out bool planarIn);
                 Assert.That(planarIn, Is.EqualTo(liftedIn), "OBB " + repro);
                 Same(planar, lifted, "OBB " + repro);

@@ -144,7 +144,7 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// A capsule (axis [a, b], radius r) against a solid box: the axis's solid signed distance (as
-        /// <see cref="SegmentBox"/>: the same verdict, minimum and push) less r, and the axis's witness moved by r along the
+        /// <see cref="SegmentInFrame"/>: the same verdict, minimum and push) less r, and the axis's witness moved by r along the
         /// contact direction: toward the box when apart (the box-local gap vector, normalised), against the push when the
         /// axis meets the box, also where the push is zero (the axis touching: the direction of the separating axis).
         /// </summary>

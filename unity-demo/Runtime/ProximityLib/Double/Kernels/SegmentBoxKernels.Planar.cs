@@ -11,7 +11,7 @@ namespace ProximityLib.Double
     // sign of a zero coordinate. Lifting cost the 150-byte Box with its third axis and the z lanes of every step.
     internal static partial class Kernels
     {
-        /// <summary><see cref="SegmentBox"/> in the plane: segment [a, b] against a solid planar box, in the box frame.</summary>
+        /// <summary><see cref="SegmentInFrame"/> in the plane: segment [a, b] against a solid planar box, in the box frame.</summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
         public static DistanceResult2 SegmentBox2(Vector2D a, Vector2D b, in Box2 box, out bool inRange)
         {
