@@ -248,9 +248,9 @@ namespace ProximityLib.Double
         /// gap not at all), so both forms return the same bits and the same corner.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        internal static double VerticesVector(Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
-            Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA, bool planar, out int win, out uint edges)
+        internal static double VerticesVector(in Corners q, bool planar, out int win, out uint edges)
         {
+            Vector3D pa = q.Pa, dx = q.Dx, dy = q.Dy, dz = q.Dz, loB = q.LoB, hiB = q.HiB, pb = q.Pb, ex = q.Ex, ey = q.Ey, ez = q.Ez, loA = q.LoA, hiA = q.HiA;
             // Corners 0–3 per coordinate; corners 4–7 add dz to them. r: A's clamp residuals.
             Vector256<double> ax = Corners4(pa.X, dx.X, dy.X), ay = Corners4(pa.Y, dx.Y, dy.Y), az = Corners4(pa.Z, dx.Z, dy.Z);
             Vector256<double> bx = Corners4(pb.X, ex.X, ey.X), by = Corners4(pb.Y, ex.Y, ey.Y), bz = Corners4(pb.Z, ex.Z, ey.Z);

@@ -240,28 +240,27 @@ namespace ProximityLib.Double
             var ez = bz * eb.Z;
             var pb = a.ToLocal(d) + bx * loB.X + by * loB.Y + bz * loB.Z;
             // The search's copies, scaled by k (exact where nothing underflows: the same comparisons as unscaled there).
-            Vector3D spa = pa * k, sdx = dx * k, sdy = dy * k, sdz = dz * k, spb = pb * k, sex = ex * k, sey = ey * k, sez = ez * k;
-            Vector3D sloA = loA * k, shiA = hiA * k, sloB = loB * k, shiB = hiB * k;
+            var s = new Corners(pa * k, dx * k, dy * k, dz * k, loB * k, hiB * k, pb * k, ex * k, ey * k, ez * k, loA * k, hiA * k);
 
             // win: 0–7 A's corner, 8–15 B's corner, 16 + 8i + c the edge from corner c along axis i.
             int win;
             double best, winT = 0;
             uint edges;
-            if (enough > 0 && !planar && Touching(originA, a, b, spa, sdx, sdy, sdz, sloB, shiB, spb, sex, sey, sez, sloA, shiA, enough, out best, out win, out winT))
+            if (enough > 0 && !planar && Touching(originA, a, b, s, enough, out best, out win, out winT))
                 edges = 0;
             else
                 // Every vertex against the other box, and the edges of A to minimise (bit 8i + c: the edge from corner c
                 // along axis i).
-                best = Vertices(spa, sdx, sdy, sdz, sloB, shiB, spb, sex, sey, sez, sloA, shiA, planar, out win, out edges);
+                best = Vertices(s, planar, out win, out edges);
             // Those whose lower bound does not exceed the best pair, until the best is good enough.
             for (int bit = 0; edges >> bit != 0 && best > enough; bit++)
             {
                 if (((edges >> bit) & 1) == 0) continue;
                 int i = bit >> 3, from = bit & 7;
-                var dir = i == 0 ? sdx : (i == 1 ? sdy : sdz);
-                var p = Corner(spa, sdx, sdy, sdz, from);
-                if (SpanGap2(p, Corner(spa, sdx, sdy, sdz, from | (1 << i)), sloB, shiB) > best * (1 + 1e-9)) continue;
-                double g = SegmentBoxLocal(p, dir, sloB, shiB, out double t);
+                var dir = i == 0 ? s.Dx : (i == 1 ? s.Dy : s.Dz);
+                var p = Corner(s.Pa, s.Dx, s.Dy, s.Dz, from);
+                if (SpanGap2(p, Corner(s.Pa, s.Dx, s.Dy, s.Dz, from | (1 << i)), s.LoB, s.HiB) > best * (1 + 1e-9)) continue;
+                double g = SegmentBoxLocal(p, dir, s.LoB, s.HiB, out double t);
                 if (g < best) { best = g; win = 16 + bit; winT = t; }
             }
 
@@ -298,23 +297,21 @@ namespace ProximityLib.Double
         /// at most <paramref name="enough"/> (the touching configuration's rounding), false to search every feature.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Touching(Vector3D push, in Box a, in Box b, Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
-            Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA, double enough, out double best, out int win, out double winT)
+        private static bool Touching(Vector3D push, in Box a, in Box b, in Corners s, double enough, out double best, out int win, out double winT)
         {
             double px = Vector3D.Dot(push, a.X), py = Vector3D.Dot(push, a.Y), pz = Vector3D.Dot(push, a.Z);
             int ca = (px < 0 ? 1 : 0) | (py < 0 ? 2 : 0) | (pz < 0 ? 4 : 0);
             int cb = (Vector3D.Dot(push, b.X) > 0 ? 1 : 0) | (Vector3D.Dot(push, b.Y) > 0 ? 2 : 0) | (Vector3D.Dot(push, b.Z) > 0 ? 4 : 0);
-            var p = Corner(pa, dx, dy, dz, ca);
-            best = Residual(p, loB, hiB).LengthSquared;
+            best = Residual(Corner(s.Pa, s.Dx, s.Dy, s.Dz, ca), s.LoB, s.HiB).LengthSquared;
             win = ca;
             winT = 0;
-            double g = Residual(Corner(pb, ex, ey, ez, cb), loA, hiA).LengthSquared;
+            double g = Residual(Corner(s.Pb, s.Ex, s.Ey, s.Ez, cb), s.LoA, s.HiA).LengthSquared;
             if (g < best) { best = g; win = 8 + cb; }
             if (best <= enough) return true;
             double ax = Math.Abs(px), ay = Math.Abs(py), az = Math.Abs(pz);
             int i = ax <= ay && ax <= az ? 0 : (ay <= az ? 1 : 2);
             int from = ca & ~(1 << i);
-            g = SegmentBoxLocal(Corner(pa, dx, dy, dz, from), i == 0 ? dx : (i == 1 ? dy : dz), loB, hiB, out double t);
+            g = SegmentBoxLocal(Corner(s.Pa, s.Dx, s.Dy, s.Dz, from), i == 0 ? s.Dx : (i == 1 ? s.Dy : s.Dz), s.LoB, s.HiB, out double t);
             if (!(g <= enough)) return false;
             best = g;
             win = 16 + 8 * i + from;
@@ -323,20 +320,35 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
-        /// The least squared gap of A's corners (pa + sums of dx, dy, dz; B's frame) to B's box [loB, hiB] and of B's
+        /// The witness search's view of two boxes, each in the other's frame: A's corner 0 (Pa) and edge vectors (Dx, Dy,
+        /// Dz) in B's frame with B's box [LoB, HiB], and B's (Pb; Ex, Ey, Ez) in A's frame with A's box [LoA, HiA]. One
+        /// struct passed by reference: as twelve vectors by value, every call into the search's parts copied 36 doubles.
+        /// </summary>
+        internal readonly struct Corners
+        {
+            public readonly Vector3D Pa, Dx, Dy, Dz, LoB, HiB, Pb, Ex, Ey, Ez, LoA, HiA;
+
+            public Corners(Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
+                Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA)
+            {
+                Pa = pa; Dx = dx; Dy = dy; Dz = dz; LoB = loB; HiB = hiB; Pb = pb; Ex = ex; Ey = ey; Ez = ez; LoA = loA; HiA = hiA;
+            }
+        }
+
+        /// <summary>
+        /// The least squared gap of A's corners (Pa + sums of Dx, Dy, Dz; B's frame) to B's box [LoB, HiB] and of B's
         /// corners to A's box, and which corner (0–7 A's, 8–15 B's, the first of equal ones); 4 of each when planar (the
         /// z bit picks the same corner). In 3D also A's edges that descend from both ends (bit 8i + c: the edge from
         /// corner c along axis i, whose slope dir·r is &lt; 0 at c and &gt; 0 at its other end, r the clamp residual): the
         /// distance along an edge is convex, so only these can beat their ends.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double Vertices(Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
-            Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA, bool planar, out int win, out uint edges)
+        private static double Vertices(in Corners s, bool planar, out int win, out uint edges)
         {
 #if NET
-            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported) return VerticesVector(pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA, planar, out win, out edges);
+            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported) return VerticesVector(s, planar, out win, out edges);
 #endif
-            return VerticesScalar(pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA, planar, out win, out edges);
+            return VerticesScalar(s, planar, out win, out edges);
         }
 
         /// <summary>
@@ -345,9 +357,9 @@ namespace ProximityLib.Double
         /// Vector3D (Corner, Residual) took more than twice as long there.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        internal static unsafe double VerticesScalar(Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
-            Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA, bool planar, out int win, out uint edges)
+        internal static unsafe double VerticesScalar(in Corners q, bool planar, out int win, out uint edges)
         {
+            Vector3D pa = q.Pa, dx = q.Dx, dy = q.Dy, dz = q.Dz, loB = q.LoB, hiB = q.HiB, pb = q.Pb, ex = q.Ex, ey = q.Ey, ez = q.Ez, loA = q.LoA, hiA = q.HiA;
             // Clamp residuals, coordinate-major: r[8k + c] is coordinate k of A's corner c (B's frame), s[8k + c] of B's.
             double* r = stackalloc double[24], s = stackalloc double[24];
             CornerResiduals(pa.X, dx.X, dy.X, dz.X, loB.X, hiB.X, r);

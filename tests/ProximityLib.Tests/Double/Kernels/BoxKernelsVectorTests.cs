@@ -239,8 +239,9 @@ namespace ProximityTests.Double.Kernels
                 Vector3D Abs(Vector3D v) => new Vector3D(Math.Abs(v.X), Math.Abs(v.Y), Math.Abs(v.Z));
                 Vector3D loA = -Abs(G(2)), hiA = Abs(G(2)), loB = -Abs(G(2)), hiB = Abs(G(2));
                 bool planar = i % 5 == 0;
-                double scalar = ProximityLib.Double.Kernels.VerticesScalar(pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA, planar, out int winS, out uint edgesS);
-                double vector = ProximityLib.Double.Kernels.VerticesVector(pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA, planar, out int winV, out uint edgesV);
+                var corners = new ProximityLib.Double.Kernels.Corners(pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA);
+                double scalar = ProximityLib.Double.Kernels.VerticesScalar(corners, planar, out int winS, out uint edgesS);
+                double vector = ProximityLib.Double.Kernels.VerticesVector(corners, planar, out int winV, out uint edgesV);
                 Assert.That(BitConverter.DoubleToInt64Bits(vector), Is.EqualTo(BitConverter.DoubleToInt64Bits(scalar)), $"case {i}: gap");
                 Assert.That(winV, Is.EqualTo(winS), $"case {i}: corner");
                 Assert.That(edgesV, Is.EqualTo(edgesS), $"case {i}: edges");
