@@ -115,132 +115,147 @@ namespace ProximityLib.Double
         private static bool OverlapsCentered(Vector256<double> tw, Vector256<double> ax0, Vector256<double> ay0, Vector256<double> az0,
             Vector256<double> ha, Vector256<double> bx0, Vector256<double> by0, Vector256<double> bz0, Vector256<double> hb)
         {
-            // Columns: lane i of ax is a_i.X (A's axes are the rows ax0, ay0, az0); likewise for B.
-            Transpose(ax0, ay0, az0, out var ax, out var ay, out var az);
-            Transpose(bx0, by0, bz0, out var bx, out var by, out var bz);
-            // Rows of R (lane j of r_i is a_i · b_j) and T in A's frame. R's columns (lane i of c_j is a_i · b_j) are its
-            // transpose: the same products summed in the same order, so the same bits as forming each dot product again.
-            var r0 = bx * Lane(ax0, 0) + by * Lane(ax0, 1) + bz * Lane(ax0, 2);
-            var r1 = bx * Lane(ay0, 0) + by * Lane(ay0, 1) + bz * Lane(ay0, 2);
-            var r2 = bx * Lane(az0, 0) + by * Lane(az0, 1) + bz * Lane(az0, 2);
-            Transpose(r0, r1, r2, out var c0, out var c1, out var c2);
-            var t = ax * Lane(tw, 0) + ay * Lane(tw, 1) + az * Lane(tw, 2);
+            FrameOfA(tw, ax0, ay0, az0, bx0, by0, bz0, out var r0, out var r1, out var r2, out var c0, out var c1, out var c2, out var t);
             Vector256<double> tx = Lane(t, 0), ty = Lane(t, 1), tz = Lane(t, 2);
             Vector256<double> hax = Lane(ha, 0), hay = Lane(ha, 1), haz = Lane(ha, 2);
 
-            var faceA = Vector256.GreaterThan(Vector256.Abs(t),
-                ha + Vector256.Abs(c0) * Lane(hb, 0) + Vector256.Abs(c1) * Lane(hb, 1) + Vector256.Abs(c2) * Lane(hb, 2));
-            var faceB = Vector256.GreaterThan(Vector256.Abs(r0 * tx + r1 * ty + r2 * tz),
-                Vector256.Abs(r0) * hax + Vector256.Abs(r1) * hay + Vector256.Abs(r2) * haz + hb);
+            var faceA = Vector256.GreaterThan(Vector256.Abs(t), FaceARadii(ha, hb, c0, c1, c2));
+            var faceB = Vector256.GreaterThan(FaceBSeparation(t, r0, r1, r2), FaceBRadii(ha, hb, r0, r1, r2));
             if ((faceA | faceB).ExtractMostSignificantBits() != 0) return false;
 
             var hbNext = Avx2.Permute4x64(hb, Next);
             var hbPrev = Avx2.Permute4x64(hb, Prev);
-            var edges = EdgeAxesSeparate(ty, tz, hay, haz, r1, r2, hbNext, hbPrev)   // e_x × b_j
-                | EdgeAxesSeparate(tz, tx, haz, hax, r2, r0, hbNext, hbPrev)         // e_y × b_j
-                | EdgeAxesSeparate(tx, ty, hax, hay, r0, r1, hbNext, hbPrev);        // e_z × b_j
+            var edges = Vector256.GreaterThan(EdgeSeparation(ty, tz, r1, r2), EdgeRadii(hay, haz, r1, r2, hbNext, hbPrev))   // e_x × b_j
+                | Vector256.GreaterThan(EdgeSeparation(tz, tx, r2, r0), EdgeRadii(haz, hax, r2, r0, hbNext, hbPrev))         // e_y × b_j
+                | Vector256.GreaterThan(EdgeSeparation(tx, ty, r0, r1), EdgeRadii(hax, hay, r0, r1, hbNext, hbPrev));        // e_z × b_j
             return edges.ExtractMostSignificantBits() == 0;
         }
 
         /// <summary>
-        /// <see cref="Penetration"/> on AVX2 lanes: the 15 axes in four groups of four in the scalar form's order (A's and
-        /// B's x and y normals; their z normals and a_x × b_x, a_x × b_y; then the other a_i × b_j; the last lane none). Every
-        /// lane makes the operations of <see cref="TryAxis"/> on its axis and keeps the smaller of its two overlaps; the
-        /// first axis holding the least (in the scalar form's order) is then tried alone by <see cref="TryAxis"/>, so both
-        /// forms return the same bits.
+        /// The separating-axis values in A's frame, from the boxes' axes as rows (lane 3 of each 0): the rows r_i of R (lane j
+        /// is a_i · b_j), its columns c_j (lane i is a_i · b_j: the transpose, the same bits as forming each dot product
+        /// again) and T = tw in A's frame (lane i is a_i · tw), each lane the scalar form's Vector3D.Dot.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void FrameOfA(Vector256<double> tw, Vector256<double> ax0, Vector256<double> ay0, Vector256<double> az0,
+            Vector256<double> bx0, Vector256<double> by0, Vector256<double> bz0, out Vector256<double> r0, out Vector256<double> r1,
+            out Vector256<double> r2, out Vector256<double> c0, out Vector256<double> c1, out Vector256<double> c2, out Vector256<double> t)
+        {
+            // Columns: lane i of ax is a_i.X (A's axes are the rows ax0, ay0, az0); likewise for B.
+            Transpose(ax0, ay0, az0, out var ax, out var ay, out var az);
+            Transpose(bx0, by0, bz0, out var bx, out var by, out var bz);
+            r0 = bx * Lane(ax0, 0) + by * Lane(ax0, 1) + bz * Lane(ax0, 2);
+            r1 = bx * Lane(ay0, 0) + by * Lane(ay0, 1) + bz * Lane(ay0, 2);
+            r2 = bx * Lane(az0, 0) + by * Lane(az0, 1) + bz * Lane(az0, 2);
+            Transpose(r0, r1, r2, out c0, out c1, out c2);
+            t = ax * Lane(tw, 0) + ay * Lane(tw, 1) + az * Lane(tw, 2);
+        }
+
+        /// <summary>A's face axes (lane i): the radii h_a,i + Σ_j h_b,j |a_i · b_j| of both boxes along a_i.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector256<double> FaceARadii(Vector256<double> ha, Vector256<double> hb, Vector256<double> c0, Vector256<double> c1, Vector256<double> c2) =>
+            ha + Vector256.Abs(c0) * Lane(hb, 0) + Vector256.Abs(c1) * Lane(hb, 1) + Vector256.Abs(c2) * Lane(hb, 2);
+
+        /// <summary>B's face axes (lane j): the radii Σ_i h_a,i |a_i · b_j| + h_b,j along b_j.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector256<double> FaceBRadii(Vector256<double> ha, Vector256<double> hb, Vector256<double> r0, Vector256<double> r1, Vector256<double> r2) =>
+            Vector256.Abs(r0) * Lane(ha, 0) + Vector256.Abs(r1) * Lane(ha, 1) + Vector256.Abs(r2) * Lane(ha, 2) + hb;
+
+        /// <summary>B's face axes (lane j): |T · b_j|.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector256<double> FaceBSeparation(Vector256<double> t, Vector256<double> r0, Vector256<double> r1, Vector256<double> r2) =>
+            Vector256.Abs(r0 * Lane(t, 0) + r1 * Lane(t, 1) + r2 * Lane(t, 2));
+
+        /// <summary>
+        /// The axes e_i × b_j (j in the lanes) for the A axis i whose two other axes are p and q (cyclic): in A's frame
+        /// L = (…, −r_qj, r_pj), so |T·L| = |t_q r_pj − t_p r_qj|.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector256<double> EdgeSeparation(Vector256<double> tp, Vector256<double> tq, Vector256<double> rp, Vector256<double> rq) =>
+            Vector256.Abs(rp * tq - rq * tp);
+
+        /// <summary>
+        /// The radii of both boxes along e_i × b_j (<see cref="EdgeSeparation"/>'s axes): A's h_p|r_qj| + h_q|r_pj|, and B's
+        /// from the 2×2 minors b_k · L of rows p, q (not the orthonormality shortcut), as in the scalar form.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector256<double> EdgeRadii(Vector256<double> hp, Vector256<double> hq, Vector256<double> rp, Vector256<double> rq,
+            Vector256<double> hbNext, Vector256<double> hbPrev)
+        {
+            // Lane j: the minor of columns j and j + 1; the minor of j and j − 1 is lane j − 1 of it, negated.
+            var next = Vector256.Abs(Avx2.Permute4x64(rp, Next) * rq - Avx2.Permute4x64(rq, Next) * rp);
+            var prev = Avx2.Permute4x64(next, Prev);
+            return Vector256.Abs(rq) * hp + Vector256.Abs(rp) * hq + hbNext * next + hbPrev * prev;
+        }
+
+        /// <summary>
+        /// <see cref="OverlapDepth"/> on AVX2 lanes for boxes that are not planar: <see cref="OverlapsCentered"/>'s test on the
+        /// Box forms (the same values, so the same verdict) and, where no axis separates, each axis's overlap from those
+        /// values, (radii − |T·L|)/|L|: A's and B's face axes are unit, an edge axis e_i × b_j has |L|² = r_pj² + r_qj²
+        /// (lane 3 of every group is no axis). The first axis holding the least, in <see cref="PenetrationScalar"/>'s
+        /// order, is then tried alone by <see cref="TryAxis"/> in world axes, as that form does: the same bits.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        internal static double PenetrationVector(in Box a, in Box b, Vector3D t, out Vector3D push)
+        internal static bool OverlapDepthVector(in Box a, in Box b, Vector3D t, out double depth, out Vector3D push)
         {
             Vector3D ax = a.X, ay = a.Y, az = a.Z, bx = b.X, by = b.Y, bz = b.Z, ha = a.Half, hb = b.Half;
-            var g0 = Overlap(a, b, ha, hb, t, Vector256.Create(ax.X, ay.X, bx.X, by.X), Vector256.Create(ax.Y, ay.Y, bx.Y, by.Y),
-                Vector256.Create(ax.Z, ay.Z, bx.Z, by.Z));
-            var inf = Vector256.Create(double.PositiveInfinity);
-            Vector256<double> g1 = inf, g2 = inf, g3 = inf;
-            if (!(a.Planar || b.Planar))
+            Vector256<double> vha = V(ha), vhb = V(hb);
+            FrameOfA(V(t), V(ax), V(ay), V(az), V(bx), V(by), V(bz), out var r0, out var r1, out var r2, out var c0, out var c1, out var c2, out var tl);
+            Vector256<double> tx = Lane(tl, 0), ty = Lane(tl, 1), tz = Lane(tl, 2);
+            Vector256<double> hax = Lane(vha, 0), hay = Lane(vha, 1), haz = Lane(vha, 2);
+            var hbNext = Avx2.Permute4x64(vhb, Next);
+            var hbPrev = Avx2.Permute4x64(vhb, Prev);
+            // radii − |separation|: negative exactly where the test's |separation| > radii holds (a rounded difference keeps its sign).
+            var faceA = FaceARadii(vha, vhb, c0, c1, c2) - Vector256.Abs(tl);
+            var faceB = FaceBRadii(vha, vhb, r0, r1, r2) - FaceBSeparation(tl, r0, r1, r2);
+            var ex = EdgeRadii(hay, haz, r1, r2, hbNext, hbPrev) - EdgeSeparation(ty, tz, r1, r2);
+            var ey = EdgeRadii(haz, hax, r2, r0, hbNext, hbPrev) - EdgeSeparation(tz, tx, r2, r0);
+            var ez = EdgeRadii(hax, hay, r0, r1, hbNext, hbPrev) - EdgeSeparation(tx, ty, r0, r1);
+            var zero = Vector256<double>.Zero;
+            if ((Vector256.LessThan(faceA, zero) | Vector256.LessThan(faceB, zero) | Vector256.LessThan(ex, zero) | Vector256.LessThan(ey, zero)
+                | Vector256.LessThan(ez, zero)).ExtractMostSignificantBits() != 0)
             {
-                // B's axes as columns: lane j holds b_j. Each a_i × b_j triple in its lanes 0–2 (lane 3: u × ±u = 0),
-                // then packed with A's and B's z into three groups in the scalar order: (a_z, b_z, a_x×b_x, a_x×b_y),
-                // (a_x×b_z, a_y×b_x, a_y×b_y, a_y×b_z), (a_z×b_x, a_z×b_y, a_z×b_z, none): four Overlap calls for the
-                // 15 axes instead of five (the lanes keep their values: moving them changes no bits).
-                Vector256<double> cx = Vector256.Create(bx.X, by.X, bz.X, 0), cy = Vector256.Create(bx.Y, by.Y, bz.Y, 0), cz = Vector256.Create(bx.Z, by.Z, bz.Z, 0);
-                EdgeCrosses(ax, cx, cy, cz, out var xx, out var xy, out var xz);
-                EdgeCrosses(ay, cx, cy, cz, out var yx, out var yy, out var yz);
-                EdgeCrosses(az, cx, cy, cz, out var zx, out var zy, out var zz);
-                g1 = Overlap(a, b, ha, hb, t, PackFirst(az.X, bz.X, xx), PackFirst(az.Y, bz.Y, xy), PackFirst(az.Z, bz.Z, xz));
-                g2 = Overlap(a, b, ha, hb, t, PackSecond(xx, yx), PackSecond(xy, yy), PackSecond(xz, yz));
-                g3 = Overlap(a, b, ha, hb, t, zx, zy, zz);
+                depth = 0;
+                push = default;
+                return false;
             }
+            var inf = Vector256.Create(double.PositiveInfinity);
+            var none = Vector256.Create(0, 0, 0, -1L).AsDouble();
+            faceA = Vector256.ConditionalSelect(none, inf, faceA);
+            faceB = Vector256.ConditionalSelect(none, inf, faceB);
+            ex = EdgeOverlap(ex, r1, r2, inf);
+            ey = EdgeOverlap(ey, r2, r0, inf);
+            ez = EdgeOverlap(ez, r0, r1, inf);
             // The hardware's min (Vector256.Min spends eight more instructions per call on NaN and zero-sign rules): the
             // lanes are never NaN in range, and only which lanes equal the least matters, where −0 == +0.
-            var m = Vector256.MinNative(Vector256.MinNative(g0, g1), Vector256.MinNative(g2, g3));
+            var m = Vector256.MinNative(Vector256.MinNative(faceA, faceB), Vector256.MinNative(Vector256.MinNative(ex, ey), ez));
             m = Vector256.MinNative(m, Avx.Permute(m, 0b0101));
             m = Vector256.MinNative(m, Avx.Permute2x128(m, m, 1));
-            // The first axis (in the scalar order) holding the least value, tried alone by the scalar form.
-            uint hits = Vector256.Equals(g0, m).ExtractMostSignificantBits() | (Vector256.Equals(g1, m).ExtractMostSignificantBits() << 4)
-                | (Vector256.Equals(g2, m).ExtractMostSignificantBits() << 8) | (Vector256.Equals(g3, m).ExtractMostSignificantBits() << 12);
-            double best = double.PositiveInfinity, scale = 0;
+            // Bits in the scalar order: a_x, a_y, b_x, b_y, a_z, b_z, then a_i × b_j with i major.
+            uint fa = Vector256.Equals(faceA, m).ExtractMostSignificantBits(), fb = Vector256.Equals(faceB, m).ExtractMostSignificantBits();
+            uint hits = (fa & 3) | (fb & 3) << 2 | (fa & 4) << 2 | (fb & 4) << 3 | (Vector256.Equals(ex, m).ExtractMostSignificantBits() & 7) << 6
+                | (Vector256.Equals(ey, m).ExtractMostSignificantBits() & 7) << 9 | (Vector256.Equals(ez, m).ExtractMostSignificantBits() & 7) << 12;
+            depth = double.PositiveInfinity;
+            double scale = 0;
             Vector3D axis = default;
             if (hits != 0)
             {
-                int bit = System.Numerics.BitOperations.TrailingZeroCount(hits), e = bit - 6;
-                var v = bit < 4 ? (bit == 0 ? ax : bit == 1 ? ay : bit == 2 ? bx : by)
-                    : bit == 4 ? az : bit == 5 ? bz
-                    : EdgeCross(e < 3 ? ax : e < 6 ? ay : az, e % 3 == 0 ? bx : e % 3 == 1 ? by : bz);
-                TryAxis(v, ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+                int bit = System.Numerics.BitOperations.TrailingZeroCount(hits), j = (bit - 6) % 3;
+                var column = j == 0 ? c0 : j == 1 ? c1 : c2; // b_j in A's frame, for an edge axis
+                TryAxis(WorldAxis(bit, ax, ay, az, bx, by, bz, column.GetElement(0), column.GetElement(1), column.GetElement(2)), ax, ay, az, bx, by, bz,
+                    ha, hb, t, ref depth, ref axis, ref scale);
             }
             push = axis * scale;
-            return best;
+            return true;
         }
 
-        /// <summary>
-        /// Per lane, the smaller of <see cref="TryAxis"/>'s down and up for the axis (x, y, z), +∞ where it is no axis:
-        /// (ra + rb − |sep|)/len is exactly the one of (ra + rb ∓ sep)/len with the sign of sep, one division for both.
-        /// </summary>
-        [MethodImpl(MethodImplOptions.NoInlining)]
-        private static Vector256<double> Overlap(in Box a, in Box b, Vector3D ha, Vector3D hb, Vector3D t, Vector256<double> x, Vector256<double> y, Vector256<double> z)
+        /// <summary>An edge group's overlaps over |L| (lane 3 and zero axes: +∞), L's components in A's frame being (rp, rq) in its two other axes.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector256<double> EdgeOverlap(Vector256<double> overlap, Vector256<double> rp, Vector256<double> rq, Vector256<double> inf)
         {
-            var len2 = x * x + y * y + z * z;
-            var ra = Vector256.Create(ha.X) * Vector256.Abs(Dot(a.X, x, y, z)) + Vector256.Create(ha.Y) * Vector256.Abs(Dot(a.Y, x, y, z))
-                + Vector256.Create(ha.Z) * Vector256.Abs(Dot(a.Z, x, y, z));
-            var rb = Vector256.Create(hb.X) * Vector256.Abs(Dot(b.X, x, y, z)) + Vector256.Create(hb.Y) * Vector256.Abs(Dot(b.Y, x, y, z))
-                + Vector256.Create(hb.Z) * Vector256.Abs(Dot(b.Z, x, y, z));
-            var least = (ra + rb - Vector256.Abs(Dot(t, x, y, z))) / Vector256.Sqrt(len2);
-            return Vector256.ConditionalSelect(Vector256.GreaterThan(len2, Vector256<double>.Zero), least, Vector256.Create(double.PositiveInfinity));
+            var len2 = rp * rp + rq * rq;
+            return Vector256.ConditionalSelect(Vector256.GreaterThan(len2, Vector256<double>.Zero), overlap / Vector256.Sqrt(len2), inf);
         }
-
-        /// <summary>Per lane, u · (x, y, z) in <see cref="Vector3D.Dot"/>'s order.</summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static Vector256<double> Dot(Vector3D u, Vector256<double> x, Vector256<double> y, Vector256<double> z) =>
-            Vector256.Create(u.X) * x + Vector256.Create(u.Y) * y + Vector256.Create(u.Z) * z;
-
-        /// <summary>
-        /// The components of <see cref="EdgeCross"/>(u, c_j) for the columns c_j in the lanes (lane 3: u × ±u = 0, no
-        /// axis), each lane the scalar form's operations.
-        /// </summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void EdgeCrosses(Vector3D u, Vector256<double> cx, Vector256<double> cy, Vector256<double> cz,
-            out Vector256<double> x, out Vector256<double> y, out Vector256<double> z)
-        {
-            Vector256<double> ux = Vector256.Create(u.X), uy = Vector256.Create(u.Y), uz = Vector256.Create(u.Z);
-            var same = Vector256.GreaterThanOrEqual(ux * cx + uy * cy + uz * cz, Vector256<double>.Zero);
-            var wx = Vector256.ConditionalSelect(same, cx - ux, cx + ux);
-            var wy = Vector256.ConditionalSelect(same, cy - uy, cy + uy);
-            var wz = Vector256.ConditionalSelect(same, cz - uz, cz + uz);
-            x = uy * wz - uz * wy;
-            y = uz * wx - ux * wz;
-            z = ux * wy - uy * wx;
-        }
-
-        /// <summary>(f, g, c0, c1): two face axes' components, then lanes 0 and 1 of a cross triple.</summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static Vector256<double> PackFirst(double f, double g, Vector256<double> c) =>
-            Avx.Blend(Vector256.Create(f, g, 0, 0), Avx2.Permute4x64(c, 0b01_00_00_00), 0b1100);
-
-        /// <summary>(c2, d0, d1, d2): lane 2 of one cross triple, then lanes 0–2 of the next.</summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static Vector256<double> PackSecond(Vector256<double> c, Vector256<double> d) =>
-            Avx.Blend(Avx2.Permute4x64(d, 0b10_01_00_00), Avx2.Permute4x64(c, 0b00_00_00_10), 0b0001);
 
         /// <summary>
         /// <see cref="VerticesScalar"/> on AVX2 lanes, four corners per vector. A lane's corner is the scalar form's sums
@@ -378,23 +393,6 @@ namespace ProximityLib.Double
             c0 = Avx.Permute2x128(lo, wlo, 0x20);
             c1 = Avx.Permute2x128(hi, whi, 0x20);
             c2 = Avx.Permute2x128(lo, wlo, 0x31);
-        }
-
-        /// <summary>
-        /// The axes e_i × b_j (j in the lanes) for the A axis i whose two other axes are p and q (cyclic): in A's frame
-        /// L = (…, −r_qj, r_pj), so T·L = t_q r_pj − t_p r_qj, A's radius h_p|r_qj| + h_q|r_pj|, and B's radius uses
-        /// the 2×2 minors b_k · L of rows p, q (not the orthonormality shortcut), as in the scalar form.
-        /// </summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static Vector256<double> EdgeAxesSeparate(Vector256<double> tp, Vector256<double> tq, Vector256<double> hp, Vector256<double> hq,
-            Vector256<double> rp, Vector256<double> rq, Vector256<double> hbNext, Vector256<double> hbPrev)
-        {
-            var tl = rp * tq - rq * tp;
-            var ra = Vector256.Abs(rq) * hp + Vector256.Abs(rp) * hq;
-            // Lane j: the minor of columns j and j + 1; the minor of j and j − 1 is lane j − 1 of it, negated.
-            var next = Vector256.Abs(Avx2.Permute4x64(rp, Next) * rq - Avx2.Permute4x64(rq, Next) * rp);
-            var prev = Avx2.Permute4x64(next, Prev);
-            return Vector256.GreaterThan(Vector256.Abs(tl), ra + hbNext * next + hbPrev * prev);
         }
     }
 }

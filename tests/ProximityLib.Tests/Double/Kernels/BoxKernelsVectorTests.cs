@@ -186,17 +186,23 @@ namespace ProximityTests.Double.Kernels
             Assert.That(overlapping, Is.InRange(50, 450), "both verdicts occur");
         }
 
-        /// <summary>The penetration depth search on AVX2 lanes makes the scalar form's operations per axis: the same bits.</summary>
+        /// <summary>
+        /// The box–box test and depth search on AVX2 lanes against the scalar forms: the overlap test's verdict, and for
+        /// overlapping boxes the scalar depth search's axis, depth (bits) and push: random boxes, boxes stacked with nearly
+        /// parallel edges, identical boxes (exact ties between axes), and boxes a tiny rotation apart (edge axes of
+        /// nearly zero length), as AABB–OBB pairs too.
+        /// </summary>
         [Test]
-        public void PenetrationMatchesTheScalarFormBitForBit()
+        public void DepthSearchMatchesTheScalarFormBitForBit()
         {
             if (!System.Runtime.Intrinsics.X86.Avx2.IsSupported) Assert.Ignore("no AVX2: only the scalar form runs here");
             var r = new Random(11);
-            for (int i = 0; i < 3000; i++)
+            int overlapping = 0;
+            for (int i = 0; i < 4000; i++)
             {
                 Box a, b;
                 var oa = RandomBox(r, 1, 1);
-                switch (i % 4)
+                switch (i % 5)
                 {
                     case 0: a = oa.ToBox(); b = RandomBox(r, 1, 1).ToBox(); break;
                     // Stacked, nearly parallel edges.
@@ -206,18 +212,32 @@ namespace ProximityTests.Double.Kernels
                         break;
                     // Identical centres and boxes: exact ties between axes.
                     case 2: a = oa.ToBox(); b = oa.ToBox(); break;
-                    // Planar boxes.
+                    // A tiny rotation apart, shifted.
+                    case 3:
+                        {
+                            double angle = Math.ScaleB(1, -r.Next(10, 60));
+                            var q = System.Numerics.Quaternion.CreateFromAxisAngle(System.Numerics.Vector3.Normalize(new System.Numerics.Vector3(1, 2, 3)), (float)angle);
+                            var c = oa.Center + new Vector3D(r.NextDouble() - 0.5, r.NextDouble() - 0.5, r.NextDouble() - 0.5);
+                            a = new Obb3(oa.Center, new System.Numerics.Quaternion(0, 0, 0, 1), oa.HalfExtents).ToBox();
+                            b = new Obb3(c, q, oa.HalfExtents).ToBox();
+                            break;
+                        }
+                    // An AABB against an OBB.
                     default:
-                        a = new Obb2(new Vector2D(r.NextDouble(), r.NextDouble()), r.NextDouble() * 7, new Vector2D(0.2 + r.NextDouble(), 0.2 + r.NextDouble())).ToBox();
-                        b = new Aabb2(new Vector2D(r.NextDouble(), r.NextDouble()), new Vector2D(1 + r.NextDouble(), 1 + r.NextDouble())).ToBox();
+                        a = new Aabb3(oa.Center - oa.HalfExtents, oa.Center + oa.HalfExtents * 2).ToBox();
+                        b = RandomBox(r, 1, 1).ToBox();
                         break;
                 }
-                var t = (b.Origin + b.ToWorldOffset(b.LocalCenter)) - (a.Origin + a.ToWorldOffset(a.LocalCenter));
+                var t = (b.Origin - a.Origin + b.ToWorldOffset(b.LocalCenter)) - a.ToWorldOffset(a.LocalCenter);
+                bool overlap = ProximityLib.Double.Kernels.OverlapDepthVector(a, b, t, out double vector, out var pushVector);
+                Assert.That(overlap, Is.EqualTo(ProximityLib.Double.Kernels.BoxBoxOverlapsVector(a, b)), $"case {i}: verdict");
+                if (!overlap) continue;
+                overlapping++;
                 double scalar = ProximityLib.Double.Kernels.PenetrationScalar(a, b, t, out var pushScalar);
-                double vector = ProximityLib.Double.Kernels.PenetrationVector(a, b, t, out var pushVector);
                 Assert.That(BitConverter.DoubleToInt64Bits(vector), Is.EqualTo(BitConverter.DoubleToInt64Bits(scalar)), $"case {i}: depth");
                 Assert.That(pushVector, Is.EqualTo(pushScalar), $"case {i}: push");
             }
+            Assert.That(overlapping, Is.GreaterThan(2000), "mostly overlapping boxes");
         }
 
         /// <summary>

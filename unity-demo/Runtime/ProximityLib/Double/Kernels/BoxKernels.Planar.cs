@@ -117,7 +117,7 @@ namespace ProximityLib.Double
                 & !(Math.Abs(tx * r01 + ty * r11) > ha.X * q01 + ha.Y * q11 + hb.Y);
         }
 
-        /// <summary>The planar case of <see cref="Penetration"/>: A's and B's face normals, in that order.</summary>
+        /// <summary>The planar case of <see cref="PenetrationScalar"/>: A's and B's face normals, in that order.</summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static double Penetration2(in Box2 a, in Box2 b, Vector2D t, out Vector2D push)
         {

@@ -10,9 +10,10 @@ namespace ProximityLib.Double
         /// <summary>
         /// Box against box. Everything is first made relative to A's origin, so a common translation adds no error.
         /// Separating-axis candidates (face normals of both, and in 3D the nine edge×edge directions; Gottschalk,
-        /// Lin &amp; Manocha 1996) contain the exact minimum-translation direction of two polytopes. Each candidate is
-        /// normalised and both boxes are projected on it honestly (no orthonormality shortcuts), so a noisy,
-        /// near-degenerate cross axis can only overestimate the overlap and never wins wrongly. Apart: the best of the
+        /// Lin &amp; Manocha 1996) contain the exact minimum-translation direction of two polytopes. Both boxes are
+        /// projected on each candidate honestly (in A's frame, B through R and its 2×2 minors, no orthonormality
+        /// shortcuts), so a noisy, near-degenerate cross axis can only overestimate the overlap and never wins wrongly;
+        /// the winner is projected once more in world axes (<see cref="OverlapDepth"/>). Apart: the best of the
         /// vertex–box and edge–box closed forms that can hold the closest pair (<see cref="BoxesApart"/>). Overlapping:
         /// A moved by the minimum translation just touches B, and a pair of the touching configuration found the same
         /// way, moved back, realises the penetration.
@@ -27,8 +28,8 @@ namespace ProximityLib.Double
             var shift = a.Origin;
             var d = b.Origin - shift;
             Vector3D onA, onB;
-            // Apart: the depth search below has nothing to add.
-            if (!BoxBoxOverlaps(a, b))
+            // Apart: the depth search has nothing to add.
+            if (!OverlapDepth(a, b, (d + b.ToWorldOffset(b.LocalCenter)) - a.ToWorldOffset(a.LocalCenter), out double depth, out var push))
             {
                 double gap = BoxesApart(a, default, b, d, 0, k, out onA, out onB);
                 // A subnormal squared gap has lost bits, and a zero one is rare here (the boxes are apart) and may have
@@ -36,9 +37,6 @@ namespace ProximityLib.Double
                 inRange &= Range.In(gap);
                 return new DistanceResult3(Math.Sqrt(gap), gap, onA + shift, onB + shift, 0, 0);
             }
-            var ca = a.ToWorldOffset(a.LocalCenter);
-            var cb = d + b.ToWorldOffset(b.LocalCenter);
-            double depth = Penetration(a, b, cb - ca, out var push);
             // A moved by the push just touches B: its squared gap there is rounding, and any pair within 2^-50·S of
             // touching realises the depth as well as the nearest one (apart by rounding, the gap must be the least).
             // BoxesApart compares at the scale k, where S is about 1.
@@ -65,67 +63,149 @@ namespace ProximityLib.Double
             double size = Size(a, b);
             inRange = Range.Box(size);
             var d = b.Origin - a.Origin;
-            if (BoxBoxOverlaps(a, b))
-            {
-                var ca = a.ToWorldOffset(a.LocalCenter);
-                var cb = d + b.ToWorldOffset(b.LocalCenter);
-                double depth = Penetration(a, b, cb - ca, out _);
-                if (depth >= 0) return -depth;
-            }
+            if (OverlapDepth(a, b, (d + b.ToWorldOffset(b.LocalCenter)) - a.ToWorldOffset(a.LocalCenter), out double depth, out _) && depth >= 0)
+                return -depth;
             double gap = BoxesApart(a, default, b, d, 0, Num.InversePowerOfTwo(size), out _, out _);
             inRange &= Range.In(gap); // a zero gap of boxes found apart may have underflowed: the slow path
             return Math.Sqrt(gap);
         }
 
         /// <summary>
-        /// The least translation of A that clears B (returned as <paramref name="push"/>, its length returned) over the
-        /// face normals and, in 3D, the edge × edge directions; negative when some axis separates (the push is then unused).
-        /// Each axis's projections are formed on the axis as it is and divided by its length once (instead of normalising
-        /// the axis with three divisions); on AVX2, four axes at a time (BoxKernels.Vector.cs).
+        /// The separating-axis test (the verdict of <see cref="BoxBoxOverlaps(in Box, in Box)"/>) and, for boxes it finds
+        /// overlapping, the least translation of A that clears B (returned as <paramref name="push"/>, its length as
+        /// <paramref name="depth"/>) over the face normals and, in 3D, the edge × edge directions; a negative depth when
+        /// the winning axis separates after all (the push is then unused). t: B's centre from A's, in world axes. The axis
+        /// is chosen in A's frame, where each one's overlap is a few of the test's own values (R = a_i · b_j, T, the
+        /// minors): projecting both boxes afresh on each of the 15 world axes took four times the work. The chosen axis is
+        /// then tried alone in world axes (<see cref="TryAxis"/>, on <see cref="WorldAxis"/>), so the depth and push are
+        /// those of honest world projections on it; two axes whose overlaps differ by rounding are equally good minima.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double Penetration(in Box a, in Box b, Vector3D t, out Vector3D push)
+        private static bool OverlapDepth(in Box a, in Box b, Vector3D t, out double depth, out Vector3D push)
         {
 #if NET
-            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported) return PenetrationVector(a, b, t, out push);
+            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported && !(a.Planar || b.Planar)) return OverlapDepthVector(a, b, t, out depth, out push);
 #endif
-            return PenetrationScalar(a, b, t, out push);
+            if (!BoxBoxOverlapsScalar(a, b))
+            {
+                depth = 0;
+                push = default;
+                return false;
+            }
+            depth = PenetrationScalar(a, b, t, out push);
+            return true;
         }
 
         /// <summary>
-        /// The scalar form of <see cref="Penetration"/>: the only one on netstandard2.1 (Unity) and without AVX2. In plain
-        /// doubles (<see cref="AxisSearch"/>): Mono keeps every Vector3D temporary in memory, and the same steps written
-        /// on Vector3D took about 1.5 times as long there.
+        /// The depth search of <see cref="OverlapDepth"/> in plain doubles, for boxes the test found overlapping: the only
+        /// form on netstandard2.1 (Unity) and without AVX2. Each axis's overlap is formed with the operations of a lane of
+        /// the AVX2 form (OverlapDepthVector, BoxKernels.Vector.cs), in its order, so both forms choose the same axis and return the same bits.
+        /// Planar boxes (the 2D kernels' lifted reference) take the four face axes in world axes, as BoxBox2 does.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
         internal static double PenetrationScalar(in Box a, in Box b, Vector3D t, out Vector3D push)
         {
-            var s = new AxisSearch(a, b, t);
-            s.Try(s.Ax0, s.Ax1, s.Ax2);
-            s.Try(s.Ay0, s.Ay1, s.Ay2);
-            s.Try(s.Bx0, s.Bx1, s.Bx2);
-            s.Try(s.By0, s.By1, s.By2);
-            if (!(a.Planar || b.Planar))
-            {
-                s.Try(s.Az0, s.Az1, s.Az2);
-                s.Try(s.Bz0, s.Bz1, s.Bz2);
-                s.TryEdge(s.Ax0, s.Ax1, s.Ax2, s.Bx0, s.Bx1, s.Bx2);
-                s.TryEdge(s.Ax0, s.Ax1, s.Ax2, s.By0, s.By1, s.By2);
-                s.TryEdge(s.Ax0, s.Ax1, s.Ax2, s.Bz0, s.Bz1, s.Bz2);
-                s.TryEdge(s.Ay0, s.Ay1, s.Ay2, s.Bx0, s.Bx1, s.Bx2);
-                s.TryEdge(s.Ay0, s.Ay1, s.Ay2, s.By0, s.By1, s.By2);
-                s.TryEdge(s.Ay0, s.Ay1, s.Ay2, s.Bz0, s.Bz1, s.Bz2);
-                s.TryEdge(s.Az0, s.Az1, s.Az2, s.Bx0, s.Bx1, s.Bx2);
-                s.TryEdge(s.Az0, s.Az1, s.Az2, s.By0, s.By1, s.By2);
-                s.TryEdge(s.Az0, s.Az1, s.Az2, s.Bz0, s.Bz1, s.Bz2);
-            }
-            // The first axis holding the least push-out, tried alone (as the AVX2 form does).
+            Vector3D ax = a.X, ay = a.Y, az = a.Z, bx = b.X, by = b.Y, bz = b.Z, ha = a.Half, hb = b.Half;
             double best = double.PositiveInfinity, scale = 0;
             Vector3D axis = default;
-            if (s.Least < double.PositiveInfinity)
-                TryAxis(new Vector3D(s.X, s.Y, s.Z), a.X, a.Y, a.Z, b.X, b.Y, b.Z, a.Half, b.Half, t, ref best, ref axis, ref scale);
+            if (a.Planar || b.Planar)
+            {
+                // The first axis holding the least push-out, tried alone (TryAxis's steps, the smaller of down and up).
+                int planarWin = -1;
+                double least = double.PositiveInfinity;
+                PlanarCandidate(ax, 0, ax, ay, bx, by, ha, hb, t, ref least, ref planarWin);
+                PlanarCandidate(ay, 1, ax, ay, bx, by, ha, hb, t, ref least, ref planarWin);
+                PlanarCandidate(bx, 2, ax, ay, bx, by, ha, hb, t, ref least, ref planarWin);
+                PlanarCandidate(by, 3, ax, ay, bx, by, ha, hb, t, ref least, ref planarWin);
+                if (planarWin >= 0)
+                    TryAxis(WorldAxis(planarWin, ax, ay, az, bx, by, bz, 0, 0, 0), ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+                push = axis * scale;
+                return best;
+            }
+            // A's frame: r_ij = a_i · b_j and T's components, as FrameOfA's lanes.
+            double tx = Vector3D.Dot(ax, t), ty = Vector3D.Dot(ay, t), tz = Vector3D.Dot(az, t);
+            double r00 = Vector3D.Dot(ax, bx), r01 = Vector3D.Dot(ax, by), r02 = Vector3D.Dot(ax, bz);
+            double r10 = Vector3D.Dot(ay, bx), r11 = Vector3D.Dot(ay, by), r12 = Vector3D.Dot(ay, bz);
+            double r20 = Vector3D.Dot(az, bx), r21 = Vector3D.Dot(az, by), r22 = Vector3D.Dot(az, bz);
+            int win = -1;
+            double m = double.PositiveInfinity;
+            // In the order of the bits: a_x, a_y, b_x, b_y, a_z, b_z, then a_i × b_j with i major.
+            Candidate(ha.X + Math.Abs(r00) * hb.X + Math.Abs(r01) * hb.Y + Math.Abs(r02) * hb.Z - Math.Abs(tx), 0, ref m, ref win);
+            Candidate(ha.Y + Math.Abs(r10) * hb.X + Math.Abs(r11) * hb.Y + Math.Abs(r12) * hb.Z - Math.Abs(ty), 1, ref m, ref win);
+            Candidate(Math.Abs(r00) * ha.X + Math.Abs(r10) * ha.Y + Math.Abs(r20) * ha.Z + hb.X - Math.Abs(r00 * tx + r10 * ty + r20 * tz), 2, ref m, ref win);
+            Candidate(Math.Abs(r01) * ha.X + Math.Abs(r11) * ha.Y + Math.Abs(r21) * ha.Z + hb.Y - Math.Abs(r01 * tx + r11 * ty + r21 * tz), 3, ref m, ref win);
+            Candidate(ha.Z + Math.Abs(r20) * hb.X + Math.Abs(r21) * hb.Y + Math.Abs(r22) * hb.Z - Math.Abs(tz), 4, ref m, ref win);
+            Candidate(Math.Abs(r02) * ha.X + Math.Abs(r12) * ha.Y + Math.Abs(r22) * ha.Z + hb.Z - Math.Abs(r02 * tx + r12 * ty + r22 * tz), 5, ref m, ref win);
+            // e_x × b_j: rows p = y, q = z.
+            Candidate(EdgeOverlap(ty, tz, ha.Y, ha.Z, r10, r20, r11, r21, r12, r22, hb.Y, hb.Z), 6, ref m, ref win);
+            Candidate(EdgeOverlap(ty, tz, ha.Y, ha.Z, r11, r21, r12, r22, r10, r20, hb.Z, hb.X), 7, ref m, ref win);
+            Candidate(EdgeOverlap(ty, tz, ha.Y, ha.Z, r12, r22, r10, r20, r11, r21, hb.X, hb.Y), 8, ref m, ref win);
+            // e_y × b_j: p = z, q = x.
+            Candidate(EdgeOverlap(tz, tx, ha.Z, ha.X, r20, r00, r21, r01, r22, r02, hb.Y, hb.Z), 9, ref m, ref win);
+            Candidate(EdgeOverlap(tz, tx, ha.Z, ha.X, r21, r01, r22, r02, r20, r00, hb.Z, hb.X), 10, ref m, ref win);
+            Candidate(EdgeOverlap(tz, tx, ha.Z, ha.X, r22, r02, r20, r00, r21, r01, hb.X, hb.Y), 11, ref m, ref win);
+            // e_z × b_j: p = x, q = y.
+            Candidate(EdgeOverlap(tx, ty, ha.X, ha.Y, r00, r10, r01, r11, r02, r12, hb.Y, hb.Z), 12, ref m, ref win);
+            Candidate(EdgeOverlap(tx, ty, ha.X, ha.Y, r01, r11, r02, r12, r00, r10, hb.Z, hb.X), 13, ref m, ref win);
+            Candidate(EdgeOverlap(tx, ty, ha.X, ha.Y, r02, r12, r00, r10, r01, r11, hb.X, hb.Y), 14, ref m, ref win);
+            if (win >= 0)
+            {
+                int j = (win - 6) % 3; // b_j's column of R, for an edge axis
+                var column = j == 0 ? new Vector3D(r00, r10, r20) : j == 1 ? new Vector3D(r01, r11, r21) : new Vector3D(r02, r12, r22);
+                TryAxis(WorldAxis(win, ax, ay, az, bx, by, bz, column.X, column.Y, column.Z), ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
+            }
             push = axis * scale;
             return best;
+        }
+
+        /// <summary>Keeps the first candidate holding the least overlap.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void Candidate(double overlap, int bit, ref double least, ref int win)
+        {
+            if (overlap < least) { least = overlap; win = bit; }
+        }
+
+        /// <summary>
+        /// The overlap over |L| on the axis L = e_i × b_j, for the A axis i whose two other axes are p and q (cyclic): in
+        /// A's frame L has r_qj, r_pj in them (pj, qj); (pn, qn) and (pv, qv) are r_p, r_q in columns j + 1 and j − 1, hn
+        /// and hv B's half-extents there. A lane of the AVX2 form's EdgeRadii − EdgeSeparation, over |L| in EdgeOverlap,
+        /// step for step; +∞ when L is zero (parallel edges).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double EdgeOverlap(double tp, double tq, double hp, double hq, double pj, double qj, double pn, double qn,
+            double pv, double qv, double hn, double hv)
+        {
+            double next = Math.Abs(pn * qj - qn * pj), prev = Math.Abs(pj * qv - qj * pv);
+            double overlap = Math.Abs(qj) * hp + Math.Abs(pj) * hq + hn * next + hv * prev - Math.Abs(pj * tq - qj * tp);
+            double len2 = pj * pj + qj * qj;
+            return len2 > 0 ? overlap / Math.Sqrt(len2) : double.PositiveInfinity;
+        }
+
+        /// <summary>A planar box pair's face axis v (bit 0–3) in world axes: TryAxis's smaller push-out, ra + rb − |sep| over |v|.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void PlanarCandidate(Vector3D v, int bit, Vector3D ax, Vector3D ay, Vector3D bx, Vector3D by, Vector3D ha, Vector3D hb, Vector3D t,
+            ref double least, ref int win)
+        {
+            double len2 = v.LengthSquared;
+            if (!(len2 > 0)) return;
+            double ra = ha.X * Math.Abs(Vector3D.Dot(ax, v)) + ha.Y * Math.Abs(Vector3D.Dot(ay, v));
+            double rb = hb.X * Math.Abs(Vector3D.Dot(bx, v)) + hb.Y * Math.Abs(Vector3D.Dot(by, v));
+            Candidate((ra + rb - Math.Abs(Vector3D.Dot(t, v))) / Math.Sqrt(len2), bit, ref least, ref win);
+        }
+
+        /// <summary>
+        /// Axis <paramref name="bit"/> of the depth search in world axes: a_x, a_y, b_x, b_y, a_z, b_z, then a_i × b_j as its
+        /// A-frame form L mapped back (L's two components along A's other axes p, q are −r_qj and r_pj, (rx, ry, rz) being
+        /// b_j in A's frame), so the world form projects the boxes on the direction whose overlap won. The world cross
+        /// product would be another direction where the edges are nearly parallel (there L is known only to within u/sin θ
+        /// either way), and its overlap, though honest, could be far larger than the one that won.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector3D WorldAxis(int bit, Vector3D ax, Vector3D ay, Vector3D az, Vector3D bx, Vector3D by, Vector3D bz, double rx, double ry, double rz)
+        {
+            if (bit < 6) return bit < 4 ? (bit == 0 ? ax : bit == 1 ? ay : bit == 2 ? bx : by) : bit == 4 ? az : bz;
+            int i = (bit - 6) / 3;
+            return i == 0 ? ay * -rz + az * ry : i == 1 ? az * -rx + ax * rz : ax * -ry + ay * rx;
         }
 
         /// <summary>
@@ -146,60 +226,6 @@ namespace ProximityLib.Double
             if (down < best) { best = down; axis = v; scale = -down / len; }
             if (up < best) { best = up; axis = v; scale = up / len; }
         }
-
-        /// <summary>
-        /// The axis search of <see cref="PenetrationScalar"/>: both boxes' axes and half-widths and B's centre from A's as
-        /// doubles, and the first axis so far holding the least of <see cref="TryAxis"/>'s down and up. Each step makes
-        /// <see cref="TryAxis"/>'s and <see cref="EdgeCross"/>'s operations in their order, so the same bits.
-        /// </summary>
-        private struct AxisSearch
-        {
-            public readonly double Ax0, Ax1, Ax2, Ay0, Ay1, Ay2, Az0, Az1, Az2, Bx0, Bx1, Bx2, By0, By1, By2, Bz0, Bz1, Bz2;
-            private readonly double _hax, _hay, _haz, _hbx, _hby, _hbz, _tx, _ty, _tz;
-            public double Least, X, Y, Z;
-
-            public AxisSearch(in Box a, in Box b, Vector3D t)
-            {
-                Ax0 = a.X.X; Ax1 = a.X.Y; Ax2 = a.X.Z; Ay0 = a.Y.X; Ay1 = a.Y.Y; Ay2 = a.Y.Z; Az0 = a.Z.X; Az1 = a.Z.Y; Az2 = a.Z.Z;
-                Bx0 = b.X.X; Bx1 = b.X.Y; Bx2 = b.X.Z; By0 = b.Y.X; By1 = b.Y.Y; By2 = b.Y.Z; Bz0 = b.Z.X; Bz1 = b.Z.Y; Bz2 = b.Z.Z;
-                Vector3D ha = a.Half, hb = b.Half;
-                _hax = ha.X; _hay = ha.Y; _haz = ha.Z; _hbx = hb.X; _hby = hb.Y; _hbz = hb.Z;
-                _tx = t.X; _ty = t.Y; _tz = t.Z;
-                Least = double.PositiveInfinity; X = 0; Y = 0; Z = 0;
-            }
-
-            /// <summary><see cref="EdgeCross"/>(u, v) tried as an axis.</summary>
-            public void TryEdge(double u0, double u1, double u2, double v0, double v1, double v2)
-            {
-                double w0, w1, w2;
-                if (u0 * v0 + u1 * v1 + u2 * v2 >= 0) { w0 = v0 - u0; w1 = v1 - u1; w2 = v2 - u2; }
-                else { w0 = v0 + u0; w1 = v1 + u1; w2 = v2 + u2; }
-                Try(u1 * w2 - u2 * w1, u2 * w0 - u0 * w2, u0 * w1 - u1 * w0);
-            }
-
-            /// <summary>
-            /// The axis (x, y, z): (ra + rb − |sep|)/len is exactly the smaller of <see cref="TryAxis"/>'s down and up
-            /// (the one with the sign of sep), one division for both.
-            /// </summary>
-            public void Try(double x, double y, double z)
-            {
-                double len2 = x * x + y * y + z * z;
-                if (!(len2 > 0)) return;
-                double ra = _hax * Math.Abs(Ax0 * x + Ax1 * y + Ax2 * z) + _hay * Math.Abs(Ay0 * x + Ay1 * y + Ay2 * z) + _haz * Math.Abs(Az0 * x + Az1 * y + Az2 * z);
-                double rb = _hbx * Math.Abs(Bx0 * x + Bx1 * y + Bx2 * z) + _hby * Math.Abs(By0 * x + By1 * y + By2 * z) + _hbz * Math.Abs(Bz0 * x + Bz1 * y + Bz2 * z);
-                double least = (ra + rb - Math.Abs(_tx * x + _ty * y + _tz * z)) / Math.Sqrt(len2);
-                if (least < Least) { Least = least; X = x; Y = y; Z = z; }
-            }
-        }
-
-        /// <summary>
-        /// u × v for two unit box axes, accurate in direction even when they are nearly parallel: u × v = u × (v ∓ u),
-        /// v ∓ u carries one relative rounding per component, and u × (v ∓ u) has no cancellation (v ∓ u is nearly
-        /// perpendicular to u). The plain product's direction is off by u/sinθ, which moves a projection by that much
-        /// of the boxes' size: nearly identical rotations would overstate the depth or miss a separation.
-        /// </summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static Vector3D EdgeCross(Vector3D u, Vector3D v) => Vector3D.Cross(u, Vector3D.Dot(u, v) >= 0 ? v - u : v + u);
 
         /// <summary>
         /// Squared distance between two boxes known to be apart or touching (placed at <paramref name="originA"/> and
@@ -242,28 +268,27 @@ namespace ProximityLib.Double
             var ez = bz * eb.Z;
             var pb = a.ToLocal(d) + bx * loB.X + by * loB.Y + bz * loB.Z;
             // The search's copies, scaled by k (exact where nothing underflows: the same comparisons as unscaled there).
-            Vector3D spa = pa * k, sdx = dx * k, sdy = dy * k, sdz = dz * k, spb = pb * k, sex = ex * k, sey = ey * k, sez = ez * k;
-            Vector3D sloA = loA * k, shiA = hiA * k, sloB = loB * k, shiB = hiB * k;
+            var s = new Corners(pa * k, dx * k, dy * k, dz * k, loB * k, hiB * k, pb * k, ex * k, ey * k, ez * k, loA * k, hiA * k);
 
             // win: 0–7 A's corner, 8–15 B's corner, 16 + 8i + c the edge from corner c along axis i.
             int win;
             double best, winT = 0;
             uint edges;
-            if (enough > 0 && !planar && Touching(originA, a, b, spa, sdx, sdy, sdz, sloB, shiB, spb, sex, sey, sez, sloA, shiA, enough, out best, out win, out winT))
+            if (enough > 0 && !planar && Touching(originA, a, b, s, enough, out best, out win, out winT))
                 edges = 0;
             else
                 // Every vertex against the other box, and the edges of A to minimise (bit 8i + c: the edge from corner c
                 // along axis i).
-                best = Vertices(spa, sdx, sdy, sdz, sloB, shiB, spb, sex, sey, sez, sloA, shiA, planar, out win, out edges);
+                best = Vertices(s, planar, out win, out edges);
             // Those whose lower bound does not exceed the best pair, until the best is good enough.
             for (int bit = 0; edges >> bit != 0 && best > enough; bit++)
             {
                 if (((edges >> bit) & 1) == 0) continue;
                 int i = bit >> 3, from = bit & 7;
-                var dir = i == 0 ? sdx : (i == 1 ? sdy : sdz);
-                var p = Corner(spa, sdx, sdy, sdz, from);
-                if (SpanGap2(p, Corner(spa, sdx, sdy, sdz, from | (1 << i)), sloB, shiB) > best * (1 + 1e-9)) continue;
-                double g = SegmentBoxLocal(p, dir, sloB, shiB, out double t);
+                var dir = i == 0 ? s.Dx : (i == 1 ? s.Dy : s.Dz);
+                var p = Corner(s.Pa, s.Dx, s.Dy, s.Dz, from);
+                if (SpanGap2(p, Corner(s.Pa, s.Dx, s.Dy, s.Dz, from | (1 << i)), s.LoB, s.HiB) > best * (1 + 1e-9)) continue;
+                double g = SegmentBoxLocal(p, dir, s.LoB, s.HiB, out double t);
                 if (g < best) { best = g; win = 16 + bit; winT = t; }
             }
 
@@ -300,23 +325,21 @@ namespace ProximityLib.Double
         /// at most <paramref name="enough"/> (the touching configuration's rounding), false to search every feature.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool Touching(Vector3D push, in Box a, in Box b, Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
-            Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA, double enough, out double best, out int win, out double winT)
+        private static bool Touching(Vector3D push, in Box a, in Box b, in Corners s, double enough, out double best, out int win, out double winT)
         {
             double px = Vector3D.Dot(push, a.X), py = Vector3D.Dot(push, a.Y), pz = Vector3D.Dot(push, a.Z);
             int ca = (px < 0 ? 1 : 0) | (py < 0 ? 2 : 0) | (pz < 0 ? 4 : 0);
             int cb = (Vector3D.Dot(push, b.X) > 0 ? 1 : 0) | (Vector3D.Dot(push, b.Y) > 0 ? 2 : 0) | (Vector3D.Dot(push, b.Z) > 0 ? 4 : 0);
-            var p = Corner(pa, dx, dy, dz, ca);
-            best = Residual(p, loB, hiB).LengthSquared;
+            best = Residual(Corner(s.Pa, s.Dx, s.Dy, s.Dz, ca), s.LoB, s.HiB).LengthSquared;
             win = ca;
             winT = 0;
-            double g = Residual(Corner(pb, ex, ey, ez, cb), loA, hiA).LengthSquared;
+            double g = Residual(Corner(s.Pb, s.Ex, s.Ey, s.Ez, cb), s.LoA, s.HiA).LengthSquared;
             if (g < best) { best = g; win = 8 + cb; }
             if (best <= enough) return true;
             double ax = Math.Abs(px), ay = Math.Abs(py), az = Math.Abs(pz);
             int i = ax <= ay && ax <= az ? 0 : (ay <= az ? 1 : 2);
             int from = ca & ~(1 << i);
-            g = SegmentBoxLocal(Corner(pa, dx, dy, dz, from), i == 0 ? dx : (i == 1 ? dy : dz), loB, hiB, out double t);
+            g = SegmentBoxLocal(Corner(s.Pa, s.Dx, s.Dy, s.Dz, from), i == 0 ? s.Dx : (i == 1 ? s.Dy : s.Dz), s.LoB, s.HiB, out double t);
             if (!(g <= enough)) return false;
             best = g;
             win = 16 + 8 * i + from;
@@ -325,20 +348,35 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
-        /// The least squared gap of A's corners (pa + sums of dx, dy, dz; B's frame) to B's box [loB, hiB] and of B's
+        /// The witness search's view of two boxes, each in the other's frame: A's corner 0 (Pa) and edge vectors (Dx, Dy,
+        /// Dz) in B's frame with B's box [LoB, HiB], and B's (Pb; Ex, Ey, Ez) in A's frame with A's box [LoA, HiA]. One
+        /// struct passed by reference: as twelve vectors by value, every call into the search's parts copied 36 doubles.
+        /// </summary>
+        internal readonly struct Corners
+        {
+            public readonly Vector3D Pa, Dx, Dy, Dz, LoB, HiB, Pb, Ex, Ey, Ez, LoA, HiA;
+
+            public Corners(Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
+                Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA)
+            {
+                Pa = pa; Dx = dx; Dy = dy; Dz = dz; LoB = loB; HiB = hiB; Pb = pb; Ex = ex; Ey = ey; Ez = ez; LoA = loA; HiA = hiA;
+            }
+        }
+
+        /// <summary>
+        /// The least squared gap of A's corners (Pa + sums of Dx, Dy, Dz; B's frame) to B's box [LoB, HiB] and of B's
         /// corners to A's box, and which corner (0–7 A's, 8–15 B's, the first of equal ones); 4 of each when planar (the
         /// z bit picks the same corner). In 3D also A's edges that descend from both ends (bit 8i + c: the edge from
         /// corner c along axis i, whose slope dir·r is &lt; 0 at c and &gt; 0 at its other end, r the clamp residual): the
         /// distance along an edge is convex, so only these can beat their ends.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double Vertices(Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
-            Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA, bool planar, out int win, out uint edges)
+        private static double Vertices(in Corners s, bool planar, out int win, out uint edges)
         {
 #if NET
-            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported) return VerticesVector(pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA, planar, out win, out edges);
+            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported) return VerticesVector(s, planar, out win, out edges);
 #endif
-            return VerticesScalar(pa, dx, dy, dz, loB, hiB, pb, ex, ey, ez, loA, hiA, planar, out win, out edges);
+            return VerticesScalar(s, planar, out win, out edges);
         }
 
         /// <summary>
@@ -347,9 +385,9 @@ namespace ProximityLib.Double
         /// Vector3D (Corner, Residual) took more than twice as long there.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        internal static unsafe double VerticesScalar(Vector3D pa, Vector3D dx, Vector3D dy, Vector3D dz, Vector3D loB, Vector3D hiB,
-            Vector3D pb, Vector3D ex, Vector3D ey, Vector3D ez, Vector3D loA, Vector3D hiA, bool planar, out int win, out uint edges)
+        internal static unsafe double VerticesScalar(in Corners q, bool planar, out int win, out uint edges)
         {
+            Vector3D pa = q.Pa, dx = q.Dx, dy = q.Dy, dz = q.Dz, loB = q.LoB, hiB = q.HiB, pb = q.Pb, ex = q.Ex, ey = q.Ey, ez = q.Ez, loA = q.LoA, hiA = q.HiA;
             // Clamp residuals, coordinate-major: r[8k + c] is coordinate k of A's corner c (B's frame), s[8k + c] of B's.
             double* r = stackalloc double[24], s = stackalloc double[24];
             CornerResiduals(pa.X, dx.X, dy.X, dz.X, loB.X, hiB.X, r);
