@@ -319,15 +319,17 @@ namespace ProximityLib.Double
         /// A moved by <paramref name="push"/> (the depth search's) just touches B: the contact is at A's support feature
         /// in direction −push and B's in direction +push. Tries A's support corner against box B and B's against box A
         /// (the first of equal ones, A's first, as <see cref="Vertices"/> orders them), then A's edge through its corner
-        /// along the axis most nearly across the push (an edge–edge contact); true with that pair when its squared gap is
-        /// at most <paramref name="enough"/> (the touching configuration's rounding), false to search every feature.
+        /// along the axis most nearly across the push (an edge–edge contact) at its crossing with B's edge likewise, or
+        /// minimised against B where that crossing does not touch; true with that pair when its squared gap is at most
+        /// <paramref name="enough"/> (the touching configuration's rounding), false to search every feature.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static bool Touching(Vector3D push, in Box a, in Box b, in Corners s, double enough, out double best, out int win, out double winT)
         {
             double px = Vector3D.Dot(push, a.X), py = Vector3D.Dot(push, a.Y), pz = Vector3D.Dot(push, a.Z);
+            double qx = Vector3D.Dot(push, b.X), qy = Vector3D.Dot(push, b.Y), qz = Vector3D.Dot(push, b.Z);
             int ca = (px < 0 ? 1 : 0) | (py < 0 ? 2 : 0) | (pz < 0 ? 4 : 0);
-            int cb = (Vector3D.Dot(push, b.X) > 0 ? 1 : 0) | (Vector3D.Dot(push, b.Y) > 0 ? 2 : 0) | (Vector3D.Dot(push, b.Z) > 0 ? 4 : 0);
+            int cb = (qx > 0 ? 1 : 0) | (qy > 0 ? 2 : 0) | (qz > 0 ? 4 : 0);
             best = Residual(Corner(s.Pa, s.Dx, s.Dy, s.Dz, ca), s.LoB, s.HiB).LengthSquared;
             win = ca;
             winT = 0;
@@ -337,8 +339,21 @@ namespace ProximityLib.Double
             double ax = Math.Abs(px), ay = Math.Abs(py), az = Math.Abs(pz);
             int i = ax <= ay && ax <= az ? 0 : (ay <= az ? 1 : 2);
             int from = ca & ~(1 << i);
-            g = SegmentBoxLocal(Corner(s.Pa, s.Dx, s.Dy, s.Dz, from), i == 0 ? s.Dx : (i == 1 ? s.Dy : s.Dz), s.LoB, s.HiB, out double t);
-            if (!(g <= enough)) return false;
+            var p = Corner(s.Pa, s.Dx, s.Dy, s.Dz, from);
+            var dir = i == 0 ? s.Dx : (i == 1 ? s.Dy : s.Dz);
+            // B's edge through its corner along the axis most nearly across the push, j: A's edge crosses it where the
+            // two meet in the plane across b_j (B's frame: the two coordinates other than j). Taken when that point is on
+            // A's edge and touches B; else the edge is minimised against B.
+            double bxa = Math.Abs(qx), bya = Math.Abs(qy), bza = Math.Abs(qz);
+            int j = bxa <= bya && bxa <= bza ? 0 : (bya <= bza ? 1 : 2), k1 = j == 0 ? 1 : 0, k2 = j == 2 ? 1 : 2;
+            var corner = Corner(s.LoB, s.HiB, cb);
+            double d1 = Vec.Get(dir, k1), d2 = Vec.Get(dir, k2);
+            double t = ((Vec.Get(corner, k1) - Vec.Get(p, k1)) * d1 + (Vec.Get(corner, k2) - Vec.Get(p, k2)) * d2) / (d1 * d1 + d2 * d2);
+            if (!(t >= 0 && t <= 1 && (g = Residual(p + dir * t, s.LoB, s.HiB).LengthSquared) <= enough))
+            {
+                g = SegmentBoxLocal(p, dir, s.LoB, s.HiB, out t);
+                if (!(g <= enough)) return false;
+            }
             best = g;
             win = 16 + 8 * i + from;
             winT = t;
