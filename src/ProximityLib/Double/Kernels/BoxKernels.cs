@@ -52,6 +52,19 @@ namespace ProximityLib.Double
         }
 
         /// <summary>
+        /// <see cref="BoxBox"/> on two OBBs in canonical order (the result swapped back): one call on two Box forms built
+        /// here, where the pair's one call per order had the caller's frame hold four, zeroed on every query without
+        /// dynamic PGO (ab, 3 × 7: 0.93–0.99 of the time, Mono 0.96–1.0). The distance alone measured 1.03–1.09 so
+        /// wrapped, and keeps the call per order.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static DistanceResult3 ObbObb(in Obb3 a, in Obb3 b, out bool inRange)
+        {
+            if (!Order.Swap(a, b)) return BoxBox(a.ToBox(), b.ToBox(), out inRange);
+            return BoxBox(b.ToBox(), a.ToBox(), out inRange).Swapped();
+        }
+
+        /// <summary>
         /// The distance of <see cref="BoxBox"/> alone: the same steps, without the witness search of overlapping boxes
         /// unless the depth search found a separation (then its gap is the answer, as there, from the same search).
         /// </summary>

@@ -9,8 +9,7 @@ namespace ProximityLib.Double
         // The separating-axis steps work in A's frame: the pair runs in canonical order and the result is swapped back.
         /// <summary>Closest distance between an OBB and an OBB (3D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 15 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; when apart, the closed forms on the features that can hold the closest pair (every vertex against the other box; in 3D the edges that descend from both ends).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult3 Core(in Obb3 a, in Obb3 b, out bool inRange) =>
-            Order.Swap(a, b) ? Kernels.BoxBox(b.ToBox(), a.ToBox(), out inRange).Swapped() : Kernels.BoxBox(a.ToBox(), b.ToBox(), out inRange);
+        internal static DistanceResult3 Core(in Obb3 a, in Obb3 b, out bool inRange) => Kernels.ObbObb(a, b, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static double DistanceCore(in Obb3 a, in Obb3 b, out bool inRange) =>
             Order.Swap(a, b) ? Kernels.BoxBoxDistance(b.ToBox(), a.ToBox(), out inRange) : Kernels.BoxBoxDistance(a.ToBox(), b.ToBox(), out inRange);
