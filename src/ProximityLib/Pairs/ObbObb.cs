@@ -13,8 +13,7 @@ namespace ProximityLib.Double
             Order.Swap(a, b) ? Kernels.BoxBoxDistance(b.ToBox(), a.ToBox(), out inRange) : Kernels.BoxBoxDistance(a.ToBox(), b.ToBox(), out inRange);
         /// <summary>Closest distance between an OBB and an OBB (2D): negative when overlapping (minimum translation over the separating-axis candidates). Algorithm: SAT with 4 axes (Gottschalk et al. 1996; paper Eq. 19–20) for overlap and depth; when apart, the closed forms on the features that can hold the closest pair (every vertex against the other box; in 3D the edges that descend from both ends).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static DistanceResult2 Core(in Obb2 a, in Obb2 b, out bool inRange) =>
-            Order.Swap(a, b) ? Kernels.BoxBox2(b.ToBox2(), a.ToBox2(), out inRange).Swapped() : Kernels.BoxBox2(a.ToBox2(), b.ToBox2(), out inRange);
+        internal static DistanceResult2 Core(in Obb2 a, in Obb2 b, out bool inRange) => Kernels.ObbObb2(a, b, out inRange);
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static double DistanceCore(in Obb2 a, in Obb2 b, out bool inRange) =>
             Order.Swap(a, b) ? Kernels.BoxBoxDistance2(b.ToBox2(), a.ToBox2(), out inRange) : Kernels.BoxBoxDistance2(a.ToBox2(), b.ToBox2(), out inRange);

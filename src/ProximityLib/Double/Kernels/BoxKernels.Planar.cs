@@ -40,6 +40,14 @@ namespace ProximityLib.Double
             return new DistanceResult2(-depth, 0, onA, onB, 0, 0);
         }
 
+        /// <summary><see cref="BoxBox2"/> on two OBBs in canonical order, one call (as <see cref="ObbObb"/>).</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        public static DistanceResult2 ObbObb2(in Obb2 a, in Obb2 b, out bool inRange)
+        {
+            if (!Order.Swap(a, b)) return BoxBox2(a.ToBox2(), b.ToBox2(), out inRange);
+            return BoxBox2(b.ToBox2(), a.ToBox2(), out inRange).Swapped();
+        }
+
         /// <summary>
         /// The distance of <see cref="BoxBox2"/> alone: the same steps, without the witness search of overlapping boxes
         /// unless the depth search found a separation (then its gap is the answer, as there).
