@@ -195,7 +195,8 @@ namespace ProximityLib.Double
         /// Box forms (the same values, so the same verdict) and, where no axis separates, each axis's overlap from those
         /// values, (radii − |T·L|)/|L|: A's and B's face axes are unit, an edge axis e_i × b_j has |L|² = r_pj² + r_qj²
         /// (lane 3 of every group is no axis). The first axis holding the least, in <see cref="PenetrationScalar"/>'s
-        /// order, is then tried alone by <see cref="TryAxis"/> in world axes, as that form does: the same bits.
+        /// order, is then tried alone by <see cref="TryAxis"/> in world axes (on <see cref="WorldAxis"/>), as that form does:
+        /// the same bits.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
         internal static bool OverlapDepthVector(in Box a, in Box b, Vector3D t, out double depth, out Vector3D push)
