@@ -279,8 +279,11 @@ namespace ProximityLib.Double
         /// across the edge; the push is perpendicular to that plane's part of the segment, so the unpushed segment
         /// gives the same point. NaN when the feature does not name one point of itself: a segment parallel to the face
         /// or edge, or the point beyond the face or edge (which candidate wins a near-tie is decided by rounding, and
-        /// the pushed segment may then only nearly touch the one chosen); the caller minimises then.
+        /// the pushed segment may then only nearly touch the one chosen); the caller minimises then. Inlined: as a call,
+        /// the meeting path spilled the caller's live values around it (ab: 3D segment–box and capsule–box Between
+        /// 0.91–0.97 inlined on .NET 10 with and without PGO, 1.00–1.04 on Mono).
         /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static double TouchingParameter(Vector3D m, Vector3D d, Vector3D h, Vector3D dir)
         {
             // A face's direction is a unit axis; a segment × edge direction has a zero component along the edge only
