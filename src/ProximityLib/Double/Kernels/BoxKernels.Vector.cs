@@ -239,8 +239,8 @@ namespace ProximityLib.Double
             Vector3D axis = default;
             if (hits != 0)
             {
-                int bit = System.Numerics.BitOperations.TrailingZeroCount(hits), j = (bit - 6) % 3;
-                var column = j == 0 ? c0 : j == 1 ? c1 : c2; // b_j in A's frame, for an edge axis
+                int bit = System.Numerics.BitOperations.TrailingZeroCount(hits), j = bit < 6 ? 0 : (bit - 6) % 3;
+                var column = j == 0 ? c0 : j == 1 ? c1 : c2; // b_j in A's frame, used for an edge axis
                 TryAxis(WorldAxis(bit, ax, ay, az, bx, by, bz, column.GetElement(0), column.GetElement(1), column.GetElement(2)), ax, ay, az, bx, by, bz,
                     ha, hb, t, ref depth, ref axis, ref scale);
             }

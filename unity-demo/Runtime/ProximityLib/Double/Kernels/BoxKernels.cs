@@ -89,7 +89,8 @@ namespace ProximityLib.Double
         /// <paramref name="depth"/>) over the face normals and, in 3D, the edge × edge directions; a negative depth when
         /// the winning axis separates after all (the push is then unused). t: B's centre from A's, in world axes. The axis
         /// is chosen in A's frame, where each one's overlap is a few of the test's own values (R = a_i · b_j, T, the
-        /// minors): projecting both boxes afresh on each of the 15 world axes took four times the work. The chosen axis is
+        /// minors), where the world-axis form projected both boxes afresh on each of the 15 axes (sharing them took 3D
+        /// OBB–OBB Distance 0.80–0.83 of its time, ab). The chosen axis is
         /// then tried alone in world axes (<see cref="TryAxis"/>, on <see cref="WorldAxis"/>), so the depth and push are
         /// those of honest world projections on it; two axes whose overlaps differ by rounding are equally good minima.
         /// </summary>
@@ -163,7 +164,7 @@ namespace ProximityLib.Double
             Candidate(EdgeOverlap(tx, ty, ha.X, ha.Y, r02, r12, r00, r10, r01, r11, hb.X, hb.Y), 14, ref m, ref win);
             if (win >= 0)
             {
-                int j = (win - 6) % 3; // b_j's column of R, for an edge axis
+                int j = win < 6 ? 0 : (win - 6) % 3; // b_j's column of R, used for an edge axis
                 var column = j == 0 ? new Vector3D(r00, r10, r20) : j == 1 ? new Vector3D(r01, r11, r21) : new Vector3D(r02, r12, r22);
                 TryAxis(WorldAxis(win, ax, ay, az, bx, by, bz, column.X, column.Y, column.Z), ax, ay, az, bx, by, bz, ha, hb, t, ref best, ref axis, ref scale);
             }
@@ -378,7 +379,7 @@ namespace ProximityLib.Double
         /// <summary>
         /// The witness search's view of two boxes, each in the other's frame: A's corner 0 (Pa) and edge vectors (Dx, Dy,
         /// Dz) in B's frame with B's box [LoB, HiB], and B's (Pb; Ex, Ey, Ez) in A's frame with A's box [LoA, HiA]. One
-        /// struct passed by reference: as twelve vectors by value, every call into the search's parts copied 36 doubles.
+        /// struct passed by reference instead of twelve vectors by value (36 doubles copied per call; measured within noise).
         /// </summary>
         internal readonly struct Corners
         {
