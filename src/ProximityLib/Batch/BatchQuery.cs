@@ -193,7 +193,9 @@ namespace ProximityLib.Batch
             public float Lane(int i) => Value(_a.XAt(i) - _b.X[i], _a.YAt(i) - _b.Y[i], _a.ZAt(i) - _b.Z[i], _a.RAt(i) + _b.R[i], _margin);
 
             // The scalar lanes over pinned arrays, one loop for paired spheres and one for a broadcast sphere: through
-            // Lane (a field and a bounds check per coordinate) they ran slower on Mono than the scalar API.
+            // Lane (a field and a bounds check per coordinate) they ran slower on Mono than the scalar API. The loops call
+            // Gap or Margin, not Value: Mono 6.8 keeps the arguments of an inlined method that branches (on margin) in
+            // stack slots, a store and a load each per pair, and did not fold the constant margin.
 
             public unsafe void Values(int start, int end, Span<float> result)
             {
@@ -203,10 +205,10 @@ namespace ProximityLib.Batch
                     if (ax == null)
                     {
                         float x = _a.XAt(0), y = _a.YAt(0), z = _a.ZAt(0), r = _a.RAt(0);
-                        for (int i = start; i < end; i++) v[i] = Value(x - bx[i], y - by[i], z - bz[i], r + br[i], false);
+                        for (int i = start; i < end; i++) v[i] = Gap(x - bx[i], y - by[i], z - bz[i], r + br[i]);
                     }
                     else
-                        for (int i = start; i < end; i++) v[i] = Value(ax[i] - bx[i], ay[i] - by[i], az[i] - bz[i], ar[i] + br[i], false);
+                        for (int i = start; i < end; i++) v[i] = Gap(ax[i] - bx[i], ay[i] - by[i], az[i] - bz[i], ar[i] + br[i]);
                 }
             }
 
@@ -218,20 +220,24 @@ namespace ProximityLib.Batch
                     if (ax == null)
                     {
                         float x = _a.XAt(0), y = _a.YAt(0), z = _a.ZAt(0), r = _a.RAt(0);
-                        for (int i = start; i < end; i++) v[i] = Value(x - bx[i], y - by[i], z - bz[i], r + br[i], true) <= 0;
+                        for (int i = start; i < end; i++) v[i] = Margin(x - bx[i], y - by[i], z - bz[i], r + br[i]) <= 0;
                     }
                     else
-                        for (int i = start; i < end; i++) v[i] = Value(ax[i] - bx[i], ay[i] - by[i], az[i] - bz[i], ar[i] + br[i], true) <= 0;
+                        for (int i = start; i < end; i++) v[i] = Margin(ax[i] - bx[i], ay[i] - by[i], az[i] - bz[i], ar[i] + br[i]) <= 0;
                 }
             }
 
             /// <summary>One lane of <see cref="Compute"/> from the center offset and the radii's sum.</summary>
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            private static float Value(float dx, float dy, float dz, float r, bool margin)
-            {
-                var d2 = dx * dx + dy * dy + dz * dz;
-                return margin ? d2 - r * r : Runner.Sqrt(d2) - r;
-            }
+            private static float Value(float dx, float dy, float dz, float r, bool margin) => margin ? Margin(dx, dy, dz, r) : Gap(dx, dy, dz, r);
+
+            /// <summary>The distance lane: |d| − r.</summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static float Gap(float dx, float dy, float dz, float r) => Runner.Sqrt(dx * dx + dy * dy + dz * dz) - r;
+
+            /// <summary>The overlap lane: |d|² − r², ≤ 0 exactly when the spheres touch or overlap.</summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static float Margin(float dx, float dy, float dz, float r) => dx * dx + dy * dy + dz * dz - r * r;
         }
 
         private struct SphereAabb<TS> : IKernel where TS : struct, ISpheres
@@ -674,9 +680,14 @@ namespace ProximityLib.Batch
             }
 
             /// <summary>
-            /// The scalar verdicts over pinned arrays, one loop for paired sets and one for a broadcast box: reading the
-            /// sets through <see cref="Lane"/> (a field and a bounds check per coordinate) made them slower on Mono than
-            /// the scalar API, and so did branching on each axis (mispredicted on mixed inputs).
+            /// The scalar verdicts over pinned arrays, one loop for paired sets and one for a broadcast box, each written
+            /// out in the loop: reading the sets through <see cref="Lane"/> (a field and a bounds check per coordinate) made
+            /// them slower on Mono than the scalar API, and so did calling <see cref="Touch"/>, which Mono 6.8 inlines by
+            /// loading all twelve coordinates and storing each to the stack first. Paired, the comparisons stop at the
+            /// first separating axis, as the scalar API's do (Mono, ab: 0.55× the branch-free form). Broadcast, one box
+            /// against the set, the branches mispredict: there the sign bits of the six differences hi − lo are joined
+            /// without a branch (the branching loop measured 1.55×). A difference of floats is 0 only when they are equal,
+            /// and never −0 then because the shapes store no −0 (−0 − +0 would be −0); its sign survives overflow to ±∞.
             /// </summary>
             public unsafe void Verdicts(int start, int end, Span<bool> result)
             {
@@ -688,27 +699,27 @@ namespace ProximityLib.Batch
                     {
                         fixed (float* ax0 = set.MinX, ay0 = set.MinY, az0 = set.MinZ, ax1 = set.MaxX, ay1 = set.MaxY, az1 = set.MaxZ)
                             for (int i = start; i < end; i++)
-                                r[i] = Touch(ax0[i], ay0[i], az0[i], ax1[i], ay1[i], az1[i], bx0[i], by0[i], bz0[i], bx1[i], by1[i], bz1[i]);
+                                r[i] = ax1[i] >= bx0[i] && bx1[i] >= ax0[i] && ay1[i] >= by0[i] && by1[i] >= ay0[i] && az1[i] >= bz0[i] && bz1[i] >= az0[i];
                     }
                     else
                     {
                         _a.CornersAt(0, out var minX, out var minY, out var minZ, out var maxX, out var maxY, out var maxZ);
                         for (int i = start; i < end; i++)
-                            r[i] = Touch(minX, minY, minZ, maxX, maxY, maxZ, bx0[i], by0[i], bz0[i], bx1[i], by1[i], bz1[i]);
+                            r[i] = (BitConverter.SingleToInt32Bits(maxX - bx0[i]) | BitConverter.SingleToInt32Bits(bx1[i] - minX)
+                                | BitConverter.SingleToInt32Bits(maxY - by0[i]) | BitConverter.SingleToInt32Bits(by1[i] - minY)
+                                | BitConverter.SingleToInt32Bits(maxZ - bz0[i]) | BitConverter.SingleToInt32Bits(bz1[i] - minZ)) >= 0;
                     }
                 }
             }
 
             /// <summary>
-            /// Whether every gap lo − hi of <see cref="Compute"/> is ≤ 0, read from the sign bits of hi − lo without a
-            /// branch: a difference of floats is 0 only when they are equal, and never −0 then, because the shapes store
-            /// no −0 (−0 − +0 would be −0); its sign survives overflow to ±∞. So these are the vector lanes' verdicts.
+            /// Whether every gap lo − hi of <see cref="Compute"/> is ≤ 0: a difference of finite floats has the sign of
+            /// the exact one (0 only when they are equal; overflow keeps the sign), so hi ≥ lo exactly where lo − hi ≤ 0,
+            /// and these are the vector lanes' verdicts.
             /// </summary>
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             private static bool Touch(float ax0, float ay0, float az0, float ax1, float ay1, float az1, float bx0, float by0, float bz0, float bx1, float by1, float bz1) =>
-                (BitConverter.SingleToInt32Bits(ax1 - bx0) | BitConverter.SingleToInt32Bits(bx1 - ax0)
-                | BitConverter.SingleToInt32Bits(ay1 - by0) | BitConverter.SingleToInt32Bits(by1 - ay0)
-                | BitConverter.SingleToInt32Bits(az1 - bz0) | BitConverter.SingleToInt32Bits(bz1 - az0)) >= 0;
+                ax1 >= bx0 && bx1 >= ax0 && ay1 >= by0 && by1 >= ay0 && az1 >= bz0 && bz1 >= az0;
         }
     }
 }
