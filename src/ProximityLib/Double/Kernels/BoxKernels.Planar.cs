@@ -176,39 +176,54 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.NoInlining)]
         private static double BoxesApart2(in Box2 a, Vector2D originA, in Box2 b, Vector2D originB, double k, out Vector2D onA, out Vector2D onB)
         {
-            var ax = b.ToLocal(a.X);
-            var ay = b.ToLocal(a.Y);
-            var bx = new Vector2D(ax.X, ay.X);
-            var by = new Vector2D(ax.Y, ay.Y);
-            var d = originB - originA;
-            Vector2D loA = a.Lo, hiA = a.Hi, loB = b.Lo, hiB = b.Hi;
-            var ea = hiA - loA;
-            var eb = hiB - loB;
-            var dx = ax * ea.X;
-            var dy = ay * ea.Y;
-            var pa = b.ToLocal(-d) + ax * loA.X + ay * loA.Y;
-            var ex = bx * eb.X;
-            var ey = by * eb.Y;
-            var pb = a.ToLocal(d) + bx * loB.X + by * loB.Y;
-            var pa1 = pa + dx;
-            var pb1 = pb + ex;
+            // In plain doubles, each step as Vector2D's operations would form it, in their order (the same bits): Mono
+            // keeps every Vector2D temporary in memory, a round of stores and loads per operation.
+            double aXx = a.X.X, aXy = a.X.Y, aYx = a.Y.X, aYy = a.Y.Y, bXx = b.X.X, bXy = b.X.Y, bYx = b.Y.X, bYy = b.Y.Y;
+            // Rows: A's axes in B's frame, ax = b.ToLocal(a.X), ay = b.ToLocal(a.Y); the columns are B's axes in A's frame,
+            // bx = (ax.X, ay.X), by = (ax.Y, ay.Y).
+            double axX = aXx * bXx + aXy * bXy, axY = aXx * bYx + aXy * bYy;
+            double ayX = aYx * bXx + aYy * bXy, ayY = aYx * bYx + aYy * bYy;
+            double dX = originB.X - originA.X, dY = originB.Y - originA.Y;
+            double loAx = a.Lo.X, loAy = a.Lo.Y, hiAx = a.Hi.X, hiAy = a.Hi.Y, loBx = b.Lo.X, loBy = b.Lo.Y, hiBx = b.Hi.X, hiBy = b.Hi.Y;
+            double eaX = hiAx - loAx, eaY = hiAy - loAy, ebX = hiBx - loBx, ebY = hiBy - loBy;
+            // A's edge vectors dx = ax·ea.X, dy = ay·ea.Y and corner 0, pa = b.ToLocal(−d) + ax·loA.X + ay·loA.Y, in B's
+            // frame; B's ex = bx·eb.X, ey = by·eb.Y and pb = a.ToLocal(d) + bx·loB.X + by·loB.Y in A's.
+            double dxX = axX * eaX, dxY = axY * eaX, dyX = ayX * eaY, dyY = ayY * eaY;
+            double ndX = -dX, ndY = -dY;
+            double paX = ((ndX * bXx + ndY * bXy) + axX * loAx) + ayX * loAy;
+            double paY = ((ndX * bYx + ndY * bYy) + axY * loAx) + ayY * loAy;
+            double exX = axX * ebX, exY = ayX * ebX, eyX = axY * ebY, eyY = ayY * ebY;
+            double pbX = ((dX * aXx + dY * aXy) + axX * loBx) + axY * loBy;
+            double pbY = ((dX * aYx + dY * aYy) + ayX * loBx) + ayY * loBy;
 
-            double best = Corners2(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, k, out int win);
+            double best;
+            int win;
+#if NET
+            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported)
+                best = Corners2Vector(new Vector2D(paX, paY), new Vector2D(dxX, dxY), new Vector2D(dyX, dyY), new Vector2D(loBx, loBy), new Vector2D(hiBx, hiBy),
+                    new Vector2D(pbX, pbY), new Vector2D(exX, exY), new Vector2D(eyX, eyY), new Vector2D(loAx, loAy), new Vector2D(hiAx, hiAy), k, out win);
+            else
+#endif
+                best = Corners2Core(paX, paY, dxX, dxY, dyX, dyY, loBx, loBy, hiBx, hiBy, pbX, pbY, exX, exY, eyX, eyY, loAx, loAy, hiAx, hiAy, k, out win);
+            double ik = 1 / k;
+            best = best * ik * ik;
 
             int c = win & 3;
+            bool hx = (c & 1) != 0, hy = (c & 2) != 0;
             if (win < 4)
             {
-                var p = (c & 1) != 0 ? pa1 : pa;
-                if ((c & 2) != 0) p += dy;
-                onA = originA + a.ToWorldOffset(new Vector2D((c & 1) != 0 ? hiA.X : loA.X, (c & 2) != 0 ? hiA.Y : loA.Y));
-                onB = originB + b.ToWorldOffset(ClampLocal2(p, loB, hiB));
+                // A's corner (p + dx) + dy against B, clamped into B.
+                double px = hx ? paX + dxX : paX, py = hx ? paY + dxY : paY;
+                if (hy) { px += dyX; py += dyY; }
+                onA = originA + a.ToWorldOffset(new Vector2D(hx ? hiAx : loAx, hy ? hiAy : loAy));
+                onB = originB + b.ToWorldOffset(new Vector2D(Num.Clamp(px, loBx, hiBx), Num.Clamp(py, loBy, hiBy)));
             }
             else
             {
-                var p = (c & 1) != 0 ? pb1 : pb;
-                if ((c & 2) != 0) p += ey;
-                onB = originB + b.ToWorldOffset(new Vector2D((c & 1) != 0 ? hiB.X : loB.X, (c & 2) != 0 ? hiB.Y : loB.Y));
-                onA = originA + a.ToWorldOffset(ClampLocal2(p, loA, hiA));
+                double px = hx ? pbX + exX : pbX, py = hx ? pbY + exY : pbY;
+                if (hy) { px += eyX; py += eyY; }
+                onB = originB + b.ToWorldOffset(new Vector2D(hx ? hiBx : loBx, hy ? hiBy : loBy));
+                onA = originA + a.ToWorldOffset(new Vector2D(Num.Clamp(px, loAx, hiAx), Num.Clamp(py, loAy, hiAy)));
             }
             return best;
         }
@@ -216,48 +231,42 @@ namespace ProximityLib.Double
         /// <summary>
         /// The least squared gap of A's corners (pa + sums of dx, dy; B's frame) to B's box and of B's corners (pb + sums
         /// of ex, ey; A's frame) to A's box, and which corner holds it (0–3 A's, 4–7 B's; bit 0 adds the x edge, bit 1
-        /// the y edge, as (p + dx) + dy; the first of equal ones). Each gap's components are multiplied by k (a power of
-        /// two) before squaring and the least square by 1/k twice: exact, so where nothing underflows these are the
-        /// unscaled values' bits, and where the unscaled squares would underflow the comparisons still tell them apart.
-        /// </summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double Corners2(Vector2D pa, Vector2D dx, Vector2D dy, Vector2D loB, Vector2D hiB,
-            Vector2D pb, Vector2D ex, Vector2D ey, Vector2D loA, Vector2D hiA, double k, out int win)
-        {
-            double ik = 1 / k;
-#if NET
-            if (System.Runtime.Intrinsics.X86.Avx2.IsSupported) return Corners2Vector(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, k, out win) * ik * ik;
-#endif
-            return Corners2Scalar(pa, dx, dy, loB, hiB, pb, ex, ey, loA, hiA, k, out win) * ik * ik;
-        }
-
-        /// <summary>
-        /// The scalar form of <see cref="Corners2"/>, returning the least squared gap still scaled by k²: the only one on
-        /// netstandard2.1 (Unity) and without AVX2.
+        /// the y edge, as (p + dx) + dy; the first of equal ones), still scaled by k²: each gap's components are
+        /// multiplied by k (a power of two) before squaring, so where nothing underflows these are the unscaled values'
+        /// bits times k², and where the unscaled squares would underflow the comparisons still tell them apart. The
+        /// scalar form, on the vectors' components (<see cref="Corners2Core"/>); Corners2Vector on AVX2.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
         internal static double Corners2Scalar(Vector2D pa, Vector2D dx, Vector2D dy, Vector2D loB, Vector2D hiB,
-            Vector2D pb, Vector2D ex, Vector2D ey, Vector2D loA, Vector2D hiA, double k, out int win)
+            Vector2D pb, Vector2D ex, Vector2D ey, Vector2D loA, Vector2D hiA, double k, out int win) =>
+            Corners2Core(pa.X, pa.Y, dx.X, dx.Y, dy.X, dy.Y, loB.X, loB.Y, hiB.X, hiB.Y, pb.X, pb.Y, ex.X, ex.Y, ey.X, ey.Y, loA.X, loA.Y, hiA.X, hiA.Y, k, out win);
+
+        /// <summary>
+        /// <see cref="Corners2Scalar"/> in plain doubles (the only form on netstandard2.1, Unity): the corners as
+        /// Vector2D's additions form them ((p + dx) + dy), in the same order.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Corners2Core(double paX, double paY, double dxX, double dxY, double dyX, double dyY, double loBx, double loBy, double hiBx, double hiBy,
+            double pbX, double pbY, double exX, double exY, double eyX, double eyY, double loAx, double loAy, double hiAx, double hiAy, double k, out int win)
         {
-            var pa1 = pa + dx;
-            var pb1 = pb + ex;
-            double best = Gap2(pa, loB, hiB, k);
+            double pa1X = paX + dxX, pa1Y = paY + dxY, pb1X = pbX + exX, pb1Y = pbY + exY;
+            double best = Gap2(paX, paY, loBx, loBy, hiBx, hiBy, k);
             win = 0;
-            Least(Gap2(pa1, loB, hiB, k), 1, ref best, ref win);
-            Least(Gap2(pa + dy, loB, hiB, k), 2, ref best, ref win);
-            Least(Gap2(pa1 + dy, loB, hiB, k), 3, ref best, ref win);
-            Least(Gap2(pb, loA, hiA, k), 4, ref best, ref win);
-            Least(Gap2(pb1, loA, hiA, k), 5, ref best, ref win);
-            Least(Gap2(pb + ey, loA, hiA, k), 6, ref best, ref win);
-            Least(Gap2(pb1 + ey, loA, hiA, k), 7, ref best, ref win);
+            Least(Gap2(pa1X, pa1Y, loBx, loBy, hiBx, hiBy, k), 1, ref best, ref win);
+            Least(Gap2(paX + dyX, paY + dyY, loBx, loBy, hiBx, hiBy, k), 2, ref best, ref win);
+            Least(Gap2(pa1X + dyX, pa1Y + dyY, loBx, loBy, hiBx, hiBy, k), 3, ref best, ref win);
+            Least(Gap2(pbX, pbY, loAx, loAy, hiAx, hiAy, k), 4, ref best, ref win);
+            Least(Gap2(pb1X, pb1Y, loAx, loAy, hiAx, hiAy, k), 5, ref best, ref win);
+            Least(Gap2(pbX + eyX, pbY + eyY, loAx, loAy, hiAx, hiAy, k), 6, ref best, ref win);
+            Least(Gap2(pb1X + eyX, pb1Y + eyY, loAx, loAy, hiAx, hiAy, k), 7, ref best, ref win);
             return best;
         }
 
         /// <summary>The squared length of (p − clamp(p))·k against the box [lo, hi] (box-local).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double Gap2(Vector2D p, Vector2D lo, Vector2D hi, double k)
+        private static double Gap2(double px, double py, double loX, double loY, double hiX, double hiY, double k)
         {
-            double x = Outside(p.X, lo.X, hi.X) * k, y = Outside(p.Y, lo.Y, hi.Y) * k;
+            double x = Outside(px, loX, hiX) * k, y = Outside(py, loY, hiY) * k;
             return x * x + y * y;
         }
 
