@@ -14,20 +14,18 @@ namespace ProximityLib.Double
         /// </summary>
         public static DistanceResult2 BoxBox2(in Box2 a, in Box2 b, out bool inRange)
         {
-            double size = Size2(a, b), k = Num.InversePowerOfTwo(size);
+            bool overlap = Front2(a, b, out double size, out var d, out var t);
+            double k = Num.InversePowerOfTwo(size);
             inRange = Range.Box(size);
             var shift = a.Origin;
-            var d = b.Origin - shift;
             Vector2D onA, onB;
-            if (!BoxBoxOverlaps2(a, b))
+            if (!overlap)
             {
                 double gap = BoxesApart2(a, default, b, d, k, out onA, out onB);
                 inRange &= Range.In(gap); // a zero gap of boxes found apart may have underflowed: the slow path
                 return new DistanceResult2(Math.Sqrt(gap), gap, onA + shift, onB + shift, 0, 0);
             }
-            var ca = a.ToWorldOffset(a.LocalCenter);
-            var cb = d + b.ToWorldOffset(b.LocalCenter);
-            double depth = Penetration2(a, b, cb - ca, out var push);
+            double depth = Penetration2(a, b, t, out var push);
             if (depth < 0) push = default;
             double g = BoxesApart2(a, push, b, d, k, out onA, out onB);
             onA = onA - push + shift;
@@ -54,15 +52,11 @@ namespace ProximityLib.Double
         /// </summary>
         public static double BoxBoxDistance2(in Box2 a, in Box2 b, out bool inRange)
         {
-            double size = Size2(a, b);
+            bool overlap = Front2(a, b, out double size, out var d, out var t);
             inRange = Range.Box(size);
-            var shift = a.Origin;
-            var d = b.Origin - shift;
-            if (BoxBoxOverlaps2(a, b))
+            if (overlap)
             {
-                var ca = a.ToWorldOffset(a.LocalCenter);
-                var cb = d + b.ToWorldOffset(b.LocalCenter);
-                double depth = Penetration2(a, b, cb - ca, out _);
+                double depth = Penetration2(a, b, t, out _);
                 if (depth >= 0) return -depth;
             }
             double gap = BoxesApart2(a, default, b, d, Num.InversePowerOfTwo(size), out _, out _);
@@ -70,21 +64,37 @@ namespace ProximityLib.Double
             return Math.Sqrt(gap);
         }
 
+        /// <summary>
+        /// The front of <see cref="BoxBox2"/> and <see cref="BoxBoxDistance2"/>: the overlap verdict (<see cref="BoxBoxOverlaps2"/>),
+        /// the configuration's size (the largest magnitude of B's origin from A's and the boxes' extents), B's origin
+        /// from A's (<paramref name="d"/>) and B's centre from A's (<paramref name="t"/>, world axes). In plain doubles,
+        /// each step as Vector2D's operations would form it, in their order (the same bits): Mono keeps every Vector2D
+        /// temporary in memory.
+        /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double Size2(in Box2 a, in Box2 b) =>
-            Range.MaxAbs(b.Origin - a.Origin, a.Hi - a.Lo, b.Hi - b.Lo);
+        private static bool Front2(in Box2 a, in Box2 b, out double size, out Vector2D d, out Vector2D t)
+        {
+            double dX = b.Origin.X - a.Origin.X, dY = b.Origin.Y - a.Origin.Y;
+            double loAx = a.Lo.X, loAy = a.Lo.Y, hiAx = a.Hi.X, hiAy = a.Hi.Y, loBx = b.Lo.X, loBy = b.Lo.Y, hiBx = b.Hi.X, hiBy = b.Hi.Y;
+            double eaX = hiAx - loAx, eaY = hiAy - loAy, ebX = hiBx - loBx, ebY = hiBy - loBy;
+            size = Num.Max(Num.Max(Math.Abs(dX), Math.Abs(dY)), Num.Max(Num.Max(Math.Abs(eaX), Math.Abs(eaY)), Num.Max(Math.Abs(ebX), Math.Abs(ebY))));
+            double aXx = a.X.X, aXy = a.X.Y, aYx = a.Y.X, aYy = a.Y.Y, bXx = b.X.X, bXy = b.X.Y, bYx = b.Y.X, bYy = b.Y.Y;
+            // The centres in world axes: ToWorldOffset(LocalCenter) = X·c.X + Y·c.Y, LocalCenter = (Lo + Hi)·0.5.
+            double cAx = (loAx + hiAx) * 0.5, cAy = (loAy + hiAy) * 0.5, cBx = (loBx + hiBx) * 0.5, cBy = (loBy + hiBy) * 0.5;
+            double tX = (dX + (bXx * cBx + bYx * cBy)) - (aXx * cAx + aYx * cAy);
+            double tY = (dY + (bXy * cBx + bYy * cBy)) - (aXy * cAx + aYy * cAy);
+            d = new Vector2D(dX, dY);
+            t = new Vector2D(tX, tY);
+            return OverlapsCentered2(tX, tY, aXx, aXy, aYx, aYy, eaX * 0.5, eaY * 0.5, bXx, bXy, bYx, bYy, ebX * 0.5, ebY * 0.5);
+        }
 
         /// <summary>The planar case of <see cref="BoxBoxOverlapsScalar"/>: the four face axes, in A's frame.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static bool BoxBoxOverlaps2(in Box2 a, in Box2 b)
-        {
-            var tw = (b.Origin - a.Origin) + b.ToWorldOffset(b.LocalCenter) - a.ToWorldOffset(a.LocalCenter);
-            return OverlapsCentered2(tw, a.X, a.Y, a.Half, b.X, b.Y, b.Half);
-        }
+        public static bool BoxBoxOverlaps2(in Box2 a, in Box2 b) => Front2(a, b, out _, out _, out _);
 
         /// <summary>
         /// Whether two OBBs overlap (<see cref="BoxBoxOverlaps2(in Box2, in Box2)"/> on their Box2 forms) and whether their
-        /// magnitudes allow the fast path (<see cref="Size2"/> of those forms in range), from their fields: the Box2 forms
+        /// magnitudes allow the fast path (the size <see cref="Front2"/> forms for them in range), from their fields: the Box2 forms
         /// have centre 0, where the general form's offsets add only zeros, (h − (−h))·0.5 is h and h − (−h) is h + h. On
         /// Mono building and passing the Box2 forms cost more than the test.
         /// </summary>
@@ -111,16 +121,22 @@ namespace ProximityLib.Double
 
         /// <summary><see cref="BoxBoxOverlaps2(in Box2, in Box2)"/> on boxes centred on their origins, tw = B's centre − A's centre.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static bool OverlapsCentered2(Vector2D tw, Vector2D ax, Vector2D ay, Vector2D ha, Vector2D bx, Vector2D by, Vector2D hb)
+        private static bool OverlapsCentered2(Vector2D tw, Vector2D ax, Vector2D ay, Vector2D ha, Vector2D bx, Vector2D by, Vector2D hb) =>
+            OverlapsCentered2(tw.X, tw.Y, ax.X, ax.Y, ay.X, ay.Y, ha.X, ha.Y, bx.X, bx.Y, by.X, by.Y, hb.X, hb.Y);
+
+        /// <summary><see cref="OverlapsCentered2(Vector2D, Vector2D, Vector2D, Vector2D, Vector2D, Vector2D, Vector2D)"/> on the vectors' components (Vector2D.Dot is x·x' + y·y').</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool OverlapsCentered2(double twX, double twY, double axX, double axY, double ayX, double ayY, double haX, double haY,
+            double bxX, double bxY, double byX, double byY, double hbX, double hbY)
         {
-            double tx = Vector2D.Dot(tw, ax), ty = Vector2D.Dot(tw, ay);
-            double r00 = Vector2D.Dot(ax, bx), r01 = Vector2D.Dot(ax, by);
-            double r10 = Vector2D.Dot(ay, bx), r11 = Vector2D.Dot(ay, by);
+            double tx = twX * axX + twY * axY, ty = twX * ayX + twY * ayY;
+            double r00 = axX * bxX + axY * bxY, r01 = axX * byX + axY * byY;
+            double r10 = ayX * bxX + ayY * bxY, r11 = ayX * byX + ayY * byY;
             double q00 = Math.Abs(r00), q01 = Math.Abs(r01), q10 = Math.Abs(r10), q11 = Math.Abs(r11);
-            return !(Math.Abs(tx) > ha.X + hb.X * q00 + hb.Y * q01)
-                & !(Math.Abs(ty) > ha.Y + hb.X * q10 + hb.Y * q11)
-                & !(Math.Abs(tx * r00 + ty * r10) > ha.X * q00 + ha.Y * q10 + hb.X)
-                & !(Math.Abs(tx * r01 + ty * r11) > ha.X * q01 + ha.Y * q11 + hb.Y);
+            return !(Math.Abs(tx) > haX + hbX * q00 + hbY * q01)
+                & !(Math.Abs(ty) > haY + hbX * q10 + hbY * q11)
+                & !(Math.Abs(tx * r00 + ty * r10) > haX * q00 + haY * q10 + hbX)
+                & !(Math.Abs(tx * r01 + ty * r11) > haX * q01 + haY * q11 + hbY);
         }
 
         /// <summary>The planar case of <see cref="PenetrationScalar"/>: A's and B's face normals, in that order.</summary>
