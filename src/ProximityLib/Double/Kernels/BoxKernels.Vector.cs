@@ -83,7 +83,7 @@ namespace ProximityLib.Double
             else { x = Vector256.Create(1.0, 0, 0, 0); y = Vector256.Create(0, 1.0, 0, 0); z = Vector256.Create(0, 0, 1.0, 0); }
         }
 
-        /// <summary><see cref="Size"/> on lanes 0–2: the largest magnitude of the three.</summary>
+        /// <summary>The size of <see cref="Front"/> on lanes 0–2: the largest magnitude of the three.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static double BoxSize(Vector256<double> d, Vector256<double> ea, Vector256<double> eb)
         {

@@ -19,15 +19,15 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.NoInlining)]
         public static DistanceResult3 BoxBox(in Box a, in Box b, out bool inRange)
         {
-            double size = Size(a, b), k = Num.InversePowerOfTwo(size);
-            inRange = Range.Box(size);
             // Relative to A's origin: B's origin there is the same difference the overlap test forms, so the verdict is
             // the overlap query's own (the two agree).
+            Front(a, b, out double size, out var d, out var t);
+            double k = Num.InversePowerOfTwo(size);
+            inRange = Range.Box(size);
             var shift = a.Origin;
-            var d = b.Origin - shift;
             Vector3D onA, onB;
             // Apart: the depth search has nothing to add.
-            if (!OverlapDepth(a, b, (d + b.ToWorldOffset(b.LocalCenter)) - a.ToWorldOffset(a.LocalCenter), out double depth, out var push))
+            if (!OverlapDepth(a, b, t, out double depth, out var push))
             {
                 double gap = BoxesApart(a, default, b, d, 0, k, out onA, out onB);
                 // A subnormal squared gap has lost bits, and a zero one is rare here (the boxes are apart) and may have
@@ -71,10 +71,9 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.NoInlining)]
         public static double BoxBoxDistance(in Box a, in Box b, out bool inRange)
         {
-            double size = Size(a, b);
+            Front(a, b, out double size, out var d, out var t);
             inRange = Range.Box(size);
-            var d = b.Origin - a.Origin;
-            if (OverlapDepth(a, b, (d + b.ToWorldOffset(b.LocalCenter)) - a.ToWorldOffset(a.LocalCenter), out double depth, out _) && depth >= 0)
+            if (OverlapDepth(a, b, t, out double depth, out _) && depth >= 0)
                 return -depth;
             double gap = BoxesApart(a, default, b, d, 0, Num.InversePowerOfTwo(size), out _, out _);
             inRange &= Range.In(gap); // a zero gap of boxes found apart may have underflowed: the slow path
@@ -98,7 +97,7 @@ namespace ProximityLib.Double
 #if NET
             if (System.Runtime.Intrinsics.X86.Avx2.IsSupported && !(a.Planar || b.Planar)) return OverlapDepthVector(a, b, t, out depth, out push);
 #endif
-            if (!BoxBoxOverlapsScalar(a, b))
+            if (!OverlapsCenteredScalar(t, a, b))
             {
                 depth = 0;
                 push = default;
@@ -115,7 +114,7 @@ namespace ProximityLib.Double
         /// Planar boxes (the 2D kernels' lifted reference) take the four face axes in world axes, as BoxBox2 does.
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        internal static double PenetrationScalar(in Box a, in Box b, Vector3D t, out Vector3D push)
+        internal static double PenetrationScalar(in Box a, in Box b, in Vector3D t, out Vector3D push)
         {
             Vector3D ax = a.X, ay = a.Y, az = a.Z, bx = b.X, by = b.Y, bz = b.Z, ha = a.Half, hb = b.Half;
             double best = double.PositiveInfinity, scale = 0;
@@ -513,16 +512,37 @@ namespace ProximityLib.Double
             Num.Max(Num.Max(Num.Min(p, q) - hi, lo - Num.Max(p, q)), 0); // squared by the caller: a zero's sign is lost
 
         /// <summary>
-        /// The largest magnitude among the boxes' relative position and extents: within [2^-450, 2^450] (or 0) the box
-        /// kernels' products stay far from underflow and overflow (see <see cref="Range"/>).
+        /// The front of <see cref="BoxBox"/> and <see cref="BoxBoxDistance"/>: the size, the largest magnitude among the
+        /// boxes' relative position and extents (within [2^-450, 2^450], or 0, the box kernels' products stay far from
+        /// underflow and overflow: see <see cref="Range"/>), B's origin from A's (<paramref name="d"/>) and B's centre from
+        /// A's in world axes (<paramref name="t"/>, as <see cref="BoxBoxOverlapsScalar"/> forms it). In plain doubles,
+        /// each step as Vector3D's operations would form it, in their order (the same bits): Mono keeps every Vector3D
+        /// temporary in memory.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double Size(in Box a, in Box b) =>
-            Range.MaxAbs(b.Origin - a.Origin, a.Hi - a.Lo, b.Hi - b.Lo);
+        private static void Front(in Box a, in Box b, out double size, out Vector3D d, out Vector3D t)
+        {
+            double dX = b.Origin.X - a.Origin.X, dY = b.Origin.Y - a.Origin.Y, dZ = b.Origin.Z - a.Origin.Z;
+            double loAx = a.Lo.X, loAy = a.Lo.Y, loAz = a.Lo.Z, hiAx = a.Hi.X, hiAy = a.Hi.Y, hiAz = a.Hi.Z;
+            double loBx = b.Lo.X, loBy = b.Lo.Y, loBz = b.Lo.Z, hiBx = b.Hi.X, hiBy = b.Hi.Y, hiBz = b.Hi.Z;
+            // Range.MaxAbs of the three vectors: Num.Max(MaxAbs(d), Num.Max(MaxAbs(ea), MaxAbs(eb))).
+            double ea = Num.Max(Math.Abs(hiAx - loAx), Num.Max(Math.Abs(hiAy - loAy), Math.Abs(hiAz - loAz)));
+            double eb = Num.Max(Math.Abs(hiBx - loBx), Num.Max(Math.Abs(hiBy - loBy), Math.Abs(hiBz - loBz)));
+            size = Num.Max(Num.Max(Math.Abs(dX), Num.Max(Math.Abs(dY), Math.Abs(dZ))), Num.Max(ea, eb));
+            // The centres: ToWorldOffset(LocalCenter) = (X·c.X + Y·c.Y) + Z·c.Z with LocalCenter = (Lo + Hi)·0.5.
+            double cAx = (loAx + hiAx) * 0.5, cAy = (loAy + hiAy) * 0.5, cAz = (loAz + hiAz) * 0.5;
+            double cBx = (loBx + hiBx) * 0.5, cBy = (loBy + hiBy) * 0.5, cBz = (loBz + hiBz) * 0.5;
+            Vector3D aX = a.X, aY = a.Y, aZ = a.Z, bX = b.X, bY = b.Y, bZ = b.Z;
+            double tX = (dX + (bX.X * cBx + bY.X * cBy + bZ.X * cBz)) - (aX.X * cAx + aY.X * cAy + aZ.X * cAz);
+            double tY = (dY + (bX.Y * cBx + bY.Y * cBy + bZ.Y * cBz)) - (aX.Y * cAx + aY.Y * cAy + aZ.Y * cAz);
+            double tZ = (dZ + (bX.Z * cBx + bY.Z * cBy + bZ.Z * cBz)) - (aX.Z * cAx + aY.Z * cAy + aZ.Z * cAz);
+            d = new Vector3D(dX, dY, dZ);
+            t = new Vector3D(tX, tY, tZ);
+        }
 
         /// <summary>
         /// Whether two OBBs overlap (<see cref="BoxBoxOverlaps(in Box, in Box)"/> on their <see cref="Box"/> forms, without
-        /// building them) and whether their magnitudes allow the fast path (<see cref="Size"/> of those forms in range).
+        /// building them) and whether their magnitudes allow the fast path (the size <see cref="Front"/> forms for them in range).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static bool ObbObbOverlaps(in Obb3 a, in Obb3 b, out bool inRange)
@@ -600,7 +620,16 @@ namespace ProximityLib.Double
         internal static bool BoxBoxOverlapsScalar(in Box a, in Box b)
         {
             var tw = (b.Origin - a.Origin) + b.ToWorldOffset(b.LocalCenter) - a.ToWorldOffset(a.LocalCenter);
-            return OverlapsCenteredScalar(tw, a.X, a.Y, a.Z, a.Half, b.X, b.Y, b.Z, b.Half, a.Planar || b.Planar);
+            return OverlapsCenteredScalar(tw, a, b);
+        }
+
+        /// <summary><see cref="OverlapsCenteredScalar(in Vector3D, in Vector3D, in Vector3D, in Vector3D, in Vector3D, in Vector3D, in Vector3D, in Vector3D, in Vector3D, bool)"/> on two boxes' axes and half-extents ((Hi − Lo)·0.5), B's centre tw from A's.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool OverlapsCenteredScalar(in Vector3D tw, in Box a, in Box b)
+        {
+            var ha = new Vector3D((a.Hi.X - a.Lo.X) * 0.5, (a.Hi.Y - a.Lo.Y) * 0.5, (a.Hi.Z - a.Lo.Z) * 0.5);
+            var hb = new Vector3D((b.Hi.X - b.Lo.X) * 0.5, (b.Hi.Y - b.Lo.Y) * 0.5, (b.Hi.Z - b.Lo.Z) * 0.5);
+            return OverlapsCenteredScalar(tw, a.X, a.Y, a.Z, ha, b.X, b.Y, b.Z, hb, a.Planar || b.Planar);
         }
 
         /// <summary>
@@ -608,14 +637,19 @@ namespace ProximityLib.Double
         /// axes: two OBBs need nothing more (as OverlapsCentered on AVX2 lanes, BoxKernels.Vector.cs).
         /// </summary>
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private static bool OverlapsCenteredScalar(Vector3D tw, Vector3D ax, Vector3D ay, Vector3D az, Vector3D ha,
-            Vector3D bx, Vector3D by, Vector3D bz, Vector3D hb, bool planar)
+        private static bool OverlapsCenteredScalar(in Vector3D tw, in Vector3D ax, in Vector3D ay, in Vector3D az, in Vector3D ha,
+            in Vector3D bx, in Vector3D by, in Vector3D bz, in Vector3D hb, bool planar)
         {
-            double tx = Vector3D.Dot(tw, ax), ty = Vector3D.Dot(tw, ay), tz = Vector3D.Dot(tw, az);
+            // The dot products written out (Vector3D.Dot's x·x' + y·y' + z·z', the same bits) on components read once:
+            // on Mono each Vector3D passed to an inlined Dot is copied first.
+            double twX = tw.X, twY = tw.Y, twZ = tw.Z, axX = ax.X, axY = ax.Y, axZ = ax.Z, ayX = ay.X, ayY = ay.Y, ayZ = ay.Z;
+            double azX = az.X, azY = az.Y, azZ = az.Z, bxX = bx.X, bxY = bx.Y, bxZ = bx.Z, byX = by.X, byY = by.Y, byZ = by.Z;
+            double bzX = bz.X, bzY = bz.Y, bzZ = bz.Z;
+            double tx = twX * axX + twY * axY + twZ * axZ, ty = twX * ayX + twY * ayY + twZ * ayZ, tz = twX * azX + twY * azY + twZ * azZ;
             // r_ij = a_i · b_j: B's axes as columns in A's frame.
-            double r00 = Vector3D.Dot(ax, bx), r01 = Vector3D.Dot(ax, by), r02 = Vector3D.Dot(ax, bz);
-            double r10 = Vector3D.Dot(ay, bx), r11 = Vector3D.Dot(ay, by), r12 = Vector3D.Dot(ay, bz);
-            double r20 = Vector3D.Dot(az, bx), r21 = Vector3D.Dot(az, by), r22 = Vector3D.Dot(az, bz);
+            double r00 = axX * bxX + axY * bxY + axZ * bxZ, r01 = axX * byX + axY * byY + axZ * byZ, r02 = axX * bzX + axY * bzY + axZ * bzZ;
+            double r10 = ayX * bxX + ayY * bxY + ayZ * bxZ, r11 = ayX * byX + ayY * byY + ayZ * byZ, r12 = ayX * bzX + ayY * bzY + ayZ * bzZ;
+            double r20 = azX * bxX + azY * bxY + azZ * bxZ, r21 = azX * byX + azY * byY + azZ * byZ, r22 = azX * bzX + azY * bzY + azZ * bzZ;
             double q00 = Math.Abs(r00), q01 = Math.Abs(r01), q02 = Math.Abs(r02);
             double q10 = Math.Abs(r10), q11 = Math.Abs(r11), q12 = Math.Abs(r12);
             double q20 = Math.Abs(r20), q21 = Math.Abs(r21), q22 = Math.Abs(r22);
