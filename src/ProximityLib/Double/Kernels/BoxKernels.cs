@@ -258,26 +258,34 @@ namespace ProximityLib.Double
         private static double BoxesApart(in Box a, Vector3D originA, in Box b, Vector3D originB, double enough, double k, out Vector3D onA, out Vector3D onB)
         {
             bool planar = a.Planar || b.Planar;
-            // Rows: A's axes in B's frame (a_i · b_j); the columns are B's axes in A's frame (the same products).
-            var ax = b.ToLocal(a.X);
-            var ay = b.ToLocal(a.Y);
-            var az = b.ToLocal(a.Z);
-            var bx = new Vector3D(ax.X, ay.X, az.X);
-            var by = new Vector3D(ax.Y, ay.Y, az.Y);
-            var bz = new Vector3D(ax.Z, ay.Z, az.Z);
-            var d = originB - originA;
+            // In plain doubles, each step as Vector3D's operations would form it, in their order (the same bits): Mono
+            // keeps every Vector3D temporary in memory, a round of stores and loads per operation.
+            Vector3D aX = a.X, aY = a.Y, aZ = a.Z, bX = b.X, bY = b.Y, bZ = b.Z;
+            // Rows: A's axes in B's frame, ax = b.ToLocal(a.X) = (a.X·b.X, a.X·b.Y, a.X·b.Z) (Dot: x·x' + y·y' + z·z'), ay,
+            // az; the columns are B's axes in A's frame, bx = (ax.X, ay.X, az.X), by, bz (the same products).
+            double axX = aX.X * bX.X + aX.Y * bX.Y + aX.Z * bX.Z, axY = aX.X * bY.X + aX.Y * bY.Y + aX.Z * bY.Z, axZ = aX.X * bZ.X + aX.Y * bZ.Y + aX.Z * bZ.Z;
+            double ayX = aY.X * bX.X + aY.Y * bX.Y + aY.Z * bX.Z, ayY = aY.X * bY.X + aY.Y * bY.Y + aY.Z * bY.Z, ayZ = aY.X * bZ.X + aY.Y * bZ.Y + aY.Z * bZ.Z;
+            double azX = aZ.X * bX.X + aZ.Y * bX.Y + aZ.Z * bX.Z, azY = aZ.X * bY.X + aZ.Y * bY.Y + aZ.Z * bY.Z, azZ = aZ.X * bZ.X + aZ.Y * bZ.Y + aZ.Z * bZ.Z;
+            double dX = originB.X - originA.X, dY = originB.Y - originA.Y, dZ = originB.Z - originA.Z, nX = -dX, nY = -dY, nZ = -dZ;
             Vector3D loA = a.Lo, hiA = a.Hi, loB = b.Lo, hiB = b.Hi;
-            var ea = hiA - loA;
-            var eb = hiB - loB;
-            // A's corners in B's frame and B's in A's (bit i of the index picks Hi on axis i), and A's edge vectors.
-            var dx = ax * ea.X;
-            var dy = ay * ea.Y;
-            var dz = az * ea.Z;
-            var pa = b.ToLocal(-d) + ax * loA.X + ay * loA.Y + az * loA.Z;
-            var ex = bx * eb.X;
-            var ey = by * eb.Y;
-            var ez = bz * eb.Z;
-            var pb = a.ToLocal(d) + bx * loB.X + by * loB.Y + bz * loB.Z;
+            double eaX = hiA.X - loA.X, eaY = hiA.Y - loA.Y, eaZ = hiA.Z - loA.Z, ebX = hiB.X - loB.X, ebY = hiB.Y - loB.Y, ebZ = hiB.Z - loB.Z;
+            // A's corners in B's frame and B's in A's (bit i of the index picks Hi on axis i), and the edge vectors:
+            // dx = ax·ea.X, dy, dz; pa = b.ToLocal(−d) + ax·loA.X + ay·loA.Y + az·loA.Z; ex = bx·eb.X, ey, ez;
+            // pb = a.ToLocal(d) + bx·loB.X + by·loB.Y + bz·loB.Z.
+            var dx = new Vector3D(axX * eaX, axY * eaX, axZ * eaX);
+            var dy = new Vector3D(ayX * eaY, ayY * eaY, ayZ * eaY);
+            var dz = new Vector3D(azX * eaZ, azY * eaZ, azZ * eaZ);
+            var pa = new Vector3D(
+                (((nX * bX.X + nY * bX.Y + nZ * bX.Z) + axX * loA.X) + ayX * loA.Y) + azX * loA.Z,
+                (((nX * bY.X + nY * bY.Y + nZ * bY.Z) + axY * loA.X) + ayY * loA.Y) + azY * loA.Z,
+                (((nX * bZ.X + nY * bZ.Y + nZ * bZ.Z) + axZ * loA.X) + ayZ * loA.Y) + azZ * loA.Z);
+            var ex = new Vector3D(axX * ebX, ayX * ebX, azX * ebX);
+            var ey = new Vector3D(axY * ebY, ayY * ebY, azY * ebY);
+            var ez = new Vector3D(axZ * ebZ, ayZ * ebZ, azZ * ebZ);
+            var pb = new Vector3D(
+                (((dX * aX.X + dY * aX.Y + dZ * aX.Z) + axX * loB.X) + axY * loB.Y) + axZ * loB.Z,
+                (((dX * aY.X + dY * aY.Y + dZ * aY.Z) + ayX * loB.X) + ayY * loB.Y) + ayZ * loB.Z,
+                (((dX * aZ.X + dY * aZ.Y + dZ * aZ.Z) + azX * loB.X) + azY * loB.Y) + azZ * loB.Z);
             // The search's copies, scaled by k (exact where nothing underflows: the same comparisons as unscaled there).
             var s = new Corners(pa * k, dx * k, dy * k, dz * k, loB * k, hiB * k, pb * k, ex * k, ey * k, ez * k, loA * k, hiA * k);
 
