@@ -718,13 +718,14 @@ namespace ProximityLib.Batch
             }
 
             /// <summary>
-            /// Whether every gap lo − hi of <see cref="Compute"/> is ≤ 0: a difference of finite floats has the sign of
-            /// the exact one (0 only when they are equal; overflow keeps the sign), so hi ≥ lo exactly where lo − hi ≤ 0,
-            /// and these are the vector lanes' verdicts.
+            /// Whether every gap lo − hi of <see cref="Compute"/> is ≤ 0, read from the sign bits of hi − lo without a
+            /// branch, as <see cref="Verdicts"/> writes it out (see there): so these are the vector lanes' verdicts.
             /// </summary>
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             private static bool Touch(float ax0, float ay0, float az0, float ax1, float ay1, float az1, float bx0, float by0, float bz0, float bx1, float by1, float bz1) =>
-                ax1 >= bx0 && bx1 >= ax0 && ay1 >= by0 && by1 >= ay0 && az1 >= bz0 && bz1 >= az0;
+                (BitConverter.SingleToInt32Bits(ax1 - bx0) | BitConverter.SingleToInt32Bits(bx1 - ax0)
+                | BitConverter.SingleToInt32Bits(ay1 - by0) | BitConverter.SingleToInt32Bits(by1 - ay0)
+                | BitConverter.SingleToInt32Bits(az1 - bz0) | BitConverter.SingleToInt32Bits(bz1 - az0)) >= 0;
         }
     }
 }
