@@ -523,7 +523,7 @@ namespace ProximityLib.Double
         /// The front of <see cref="BoxBox"/> and <see cref="BoxBoxDistance"/>: the size, the largest magnitude among the
         /// boxes' relative position and extents (within [2^-450, 2^450], or 0, the box kernels' products stay far from
         /// underflow and overflow: see <see cref="Range"/>), B's origin from A's (<paramref name="d"/>) and B's centre from
-        /// A's in world axes (<paramref name="t"/>, as <see cref="BoxBoxOverlapsScalar"/> forms it). In plain doubles,
+        /// A's in world axes (<paramref name="t"/>, which <see cref="BoxBoxOverlapsScalar"/> tests). In plain doubles,
         /// each step as Vector3D's operations would form it, in their order (the same bits): Mono keeps every Vector3D
         /// temporary in memory.
         /// </summary>
@@ -627,8 +627,8 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool BoxBoxOverlapsScalar(in Box a, in Box b)
         {
-            var tw = (b.Origin - a.Origin) + b.ToWorldOffset(b.LocalCenter) - a.ToWorldOffset(a.LocalCenter);
-            return OverlapsCenteredScalar(tw, a, b);
+            Front(a, b, out _, out _, out var t);
+            return OverlapsCenteredScalar(t, a, b);
         }
 
         /// <summary><see cref="OverlapsCenteredScalar(in Vector3D, in Vector3D, in Vector3D, in Vector3D, in Vector3D, in Vector3D, in Vector3D, in Vector3D, in Vector3D, bool)"/> on two boxes' axes and half-extents ((Hi − Lo)·0.5), B's centre tw from A's.</summary>
