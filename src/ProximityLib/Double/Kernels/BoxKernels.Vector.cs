@@ -298,8 +298,10 @@ namespace ProximityLib.Double
         /// <summary>
         /// <see cref="Corners2Scalar"/> on AVX2 lanes, A's four corners in one vector and B's in another: each lane makes
         /// the scalar form's operations (a zero added where it adds nothing), so the same bits and the same corner.
+        /// Inlined into its one caller: as a call, its ten vectors went through registers and the stack (with <see cref="LeastAxis2"/>
+        /// inlined too, 2D OBB–OBB and AABB–OBB took 0.86–0.94 times as long on .NET 10 in both modes; ab, 2 × 7).
         /// </summary>
-        [MethodImpl(MethodImplOptions.NoInlining)]
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static double Corners2Vector(Vector2D pa, Vector2D dx, Vector2D dy, Vector2D loB, Vector2D hiB,
             Vector2D pb, Vector2D ex, Vector2D ey, Vector2D loA, Vector2D hiA, double k, out int win)
         {
@@ -318,9 +320,10 @@ namespace ProximityLib.Double
 
         /// <summary>
         /// The first of the axes (ax, ay, bx, by) holding the least of <see cref="TryAxis2"/>'s push-outs, or −1 when none
-        /// is an axis: per lane (ra + rb − |sep|)/len, exactly the smaller of its down and up.
+        /// is an axis: per lane (ra + rb − |sep|)/len, exactly the smaller of its down and up. Inlined into its one caller
+        /// (see <see cref="Corners2Vector"/>).
         /// </summary>
-        [MethodImpl(MethodImplOptions.NoInlining)]
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static int LeastAxis2(Vector2D ax, Vector2D ay, Vector2D bx, Vector2D by, Vector2D ha, Vector2D hb, Vector2D t)
         {
             Vector256<double> x = Vector256.Create(ax.X, ay.X, bx.X, by.X), y = Vector256.Create(ax.Y, ay.Y, bx.Y, by.Y);

@@ -158,7 +158,7 @@ namespace ProximityLib.Double
             bool apart = !SegmentBoxOverlapsLocal(la - c, ld, h, box.Planar);
             if (apart)
             {
-                double g = SegmentBoxLocal(la, ld, lo, hi, out t);
+                double g = SegmentBoxLocalCall(la, ld, lo, hi, out t);
                 inRange &= Range.In(g);
                 if (g > 0)
                 {
@@ -185,13 +185,13 @@ namespace ProximityLib.Double
             {
                 var moved = la + dir * depth;
                 t = TouchingParameter(la - c, ld, h, dir);
-                if (double.IsNaN(t)) SegmentBoxLocal(moved, ld, lo, hi, out t);
+                if (double.IsNaN(t)) SegmentBoxLocalCall(moved, ld, lo, hi, out t);
                 onAxis = SegmentPoint(a, b, t);
                 onBox = ClampToBox(box, moved + ld * t);
             }
             else
             {
-                SegmentBoxLocal(la, ld, lo, hi, out t);
+                SegmentBoxLocalCall(la, ld, lo, hi, out t);
                 onAxis = onBox = SegmentPoint(a, b, t);
                 // Touching to rounding: the separating axis found may be any whose push rounds to 0, and a radius
                 // pushed along the wrong one leaves up to the radius of overlap; the near-touch normal is exact.
