@@ -669,6 +669,7 @@ namespace ProximityLib.Double
         /// <see cref="Project(in Linear, Vector3D)"/>, also giving how far the clamp moved the point along a (in the largest
         /// component of its direction; NaN for a NaN q).
         /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static double Project(in Linear a, Vector3D q, out double moved)
         {
             double m = Range.MaxAbs(a.Dir);
@@ -734,7 +735,12 @@ namespace ProximityLib.Double
             if (down > g) { g = down; axis = -e / len; aFlat = kA == 0; }
         }
 
-        /// <summary>The extent c + [lo, hi]·k of a component along an axis (k its direction's component; ±∞ for unbounded ends).</summary>
+        /// <summary>
+        /// The extent c + [lo, hi]·k of a component along an axis (k its direction's component; ±∞ for unbounded ends).
+        /// Inlined, as <see cref="Project(in Linear, Vector3D, out double)"/>: without dynamic PGO the JIT left both as calls
+        /// (ab, 2 × 7, no PGO: 2D line, ray, segment and capsule against a capsule 0.80–0.91; with PGO and on Mono unchanged).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static void Extent(double c, double k, double lo, double hi, out double min, out double max)
         {
             if (k > 0) { min = c + lo * k; max = c + hi * k; }

@@ -53,8 +53,10 @@ namespace ProximityLib.Double
         /// The segment that answers a line or ray against a solid 2D triangle: the stretch (<see cref="TriangleStretch"/>)
         /// widened by its rounding margin and by twice the sum of the edges' largest components (at least the triangle's
         /// diameter), so a push with a component along the line clears the cut ends no sooner than a sideways one clears
-        /// the line (the segment's depth is the line's), then for a ray clamped at 0.
+        /// the line (the segment's depth is the line's), then for a ray clamped at 0. Inlined: without dynamic PGO the JIT
+        /// left it a call (ab, 2 × 7, no PGO: 2D line and ray against a triangle 0.89–0.93; with PGO 0.94–1.01).
         /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static TriFrame SolidStretch(Vector3D o, Vector3D u, bool ray, Vector3D a, Vector3D b, Vector3D c,
             out double lo, out double hi, out Vector3D p0, out Vector3D p1, out bool sized)
         {
