@@ -27,9 +27,9 @@ namespace ProximityLib.Double
         public bool IsSegment { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => Hi == 1; }
         public bool IsRay { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => Lo == 0 && Hi != 1; }
 
-        /// <summary>The point at parameter s (a segment's from its nearer endpoint).</summary>
+        /// <summary>The point at parameter s (a segment's from its nearer endpoint; a line's or ray's Start + Dir·s, in plain doubles for Mono).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public Vector3D PointAt(double s) => IsSegment ? Kernels.SegmentPoint(Start, End, s) : Start + Dir * s;
+        public Vector3D PointAt(double s) => IsSegment ? Kernels.SegmentPoint(Start, End, s) : new Vector3D(Start.X + Dir.X * s, Start.Y + Dir.Y * s, Start.Z + Dir.Z * s);
     }
 
     internal static partial class Kernels

@@ -61,9 +61,20 @@ namespace ProximityLib.Double
             return t <= 0.5 ? w - d * t : (p - b) + d * (1 - t);
         }
 
+        /// <summary>
+        /// The point at t of the segment [a, b], from the nearer end: a + (b − a)·t, or b − (b − a)·(1 − t). In plain
+        /// doubles, each component as Vector3D's operations form it (the same bits): Mono keeps every Vector3D temporary
+        /// in memory: with the vector form, a 3D segment–segment Between on Mono spent about 80 of its 210 ns forming its
+        /// two points (ab, 2 × 7: that query 0.66–0.71 in plain doubles; .NET 10 within noise).
+        /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static Vector3D SegmentPoint(Vector3D a, Vector3D b, double t) =>
-            t <= 0.5 ? a + (b - a) * t : b - (b - a) * (1 - t);
+        public static Vector3D SegmentPoint(Vector3D a, Vector3D b, double t)
+        {
+            double dx = b.X - a.X, dy = b.Y - a.Y, dz = b.Z - a.Z;
+            if (t <= 0.5) return new Vector3D(a.X + dx * t, a.Y + dy * t, a.Z + dz * t);
+            double u = 1 - t;
+            return new Vector3D(b.X - dx * u, b.Y - dy * u, b.Z - dz * u);
+        }
 
         /// <summary>
         /// Point against segment as the pair (point, segment): the distance, the segment's point and its parameter.

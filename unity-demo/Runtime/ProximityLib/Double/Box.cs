@@ -25,8 +25,16 @@ namespace ProximityLib.Double
         public Vector3D ToLocal(Vector3D worldOffset) =>
             new Vector3D(Vector3D.Dot(worldOffset, X), Vector3D.Dot(worldOffset, Y), Vector3D.Dot(worldOffset, Z));
 
+        /// <summary>
+        /// X·local.X + Y·local.Y + Z·local.Z, in plain doubles, each component as Vector3D's operations form it (the same
+        /// bits): Mono keeps every Vector3D temporary in memory.
+        /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public Vector3D ToWorldOffset(Vector3D local) => X * local.X + Y * local.Y + Z * local.Z;
+        public Vector3D ToWorldOffset(Vector3D local)
+        {
+            double u = local.X, v = local.Y, w = local.Z;
+            return new Vector3D((X.X * u + Y.X * v) + Z.X * w, (X.Y * u + Y.Y * v) + Z.Y * w, (X.Z * u + Y.Z * v) + Z.Z * w);
+        }
 
         public Vector3D Axis(int i) => i == 0 ? X : (i == 1 ? Y : Z);
 
@@ -55,8 +63,9 @@ namespace ProximityLib.Double
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public Vector2D ToLocal(Vector2D worldOffset) => new Vector2D(Vector2D.Dot(worldOffset, X), Vector2D.Dot(worldOffset, Y));
 
+        /// <summary>X·local.X + Y·local.Y in plain doubles (the same bits; see the 3D box's).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public Vector2D ToWorldOffset(Vector2D local) => X * local.X + Y * local.Y;
+        public Vector2D ToWorldOffset(Vector2D local) => new Vector2D(X.X * local.X + Y.X * local.Y, X.Y * local.X + Y.Y * local.Y);
 
         public Vector2D LocalCenter { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => (Lo + Hi) * 0.5; }
         public Vector2D Half { [MethodImpl(MethodImplOptions.AggressiveInlining)] get => (Hi - Lo) * 0.5; }

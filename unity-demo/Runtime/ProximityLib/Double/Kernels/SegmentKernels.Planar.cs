@@ -100,9 +100,14 @@ namespace ProximityLib.Double
             return inRange ? Math.Sqrt(r2) : double.NaN;
         }
 
-        /// <summary><see cref="SegmentPoint(Vector3D, Vector3D, double)"/> in the plane (the same operations per component).</summary>
+        /// <summary><see cref="SegmentPoint(Vector3D, Vector3D, double)"/> in the plane (the same operations per component, in plain doubles).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static Vector2D SegmentPoint2(Vector2D a, Vector2D b, double t) =>
-            t <= 0.5 ? a + (b - a) * t : b - (b - a) * (1 - t);
+        public static Vector2D SegmentPoint2(Vector2D a, Vector2D b, double t)
+        {
+            double dx = b.X - a.X, dy = b.Y - a.Y;
+            if (t <= 0.5) return new Vector2D(a.X + dx * t, a.Y + dy * t);
+            double u = 1 - t;
+            return new Vector2D(b.X - dx * u, b.Y - dy * u);
+        }
     }
 }
