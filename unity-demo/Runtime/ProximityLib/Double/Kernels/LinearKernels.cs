@@ -740,7 +740,7 @@ namespace ProximityLib.Double
         /// <summary>
         /// The extent c + [lo, hi]·k of a component along an axis (k its direction's component; ±∞ for unbounded ends).
         /// Inlined, as <see cref="Project(in Linear, Vector3D, out double)"/>: without dynamic PGO the JIT left both as calls
-        /// (ab, 2 × 7, no PGO: 2D line, ray, segment and capsule against a capsule 0.80–0.91; with PGO and on Mono unchanged).
+        /// (ab, 2 × 7, no PGO: 2D line, ray, segment and capsule against a capsule 0.80–0.91; with PGO and on Mono within noise).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static void Extent(double c, double k, double lo, double hi, out double min, out double max)
